@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef PDFEM_COUPLING_COUPLED_SYSTEM_H
+#define PDFEM_COUPLING_COUPLED_SYSTEM_H
+
+#include <pdfem/drivers/system_interface.h>
+#include <pdfem/fe/elastic_material.h>
+#include <pdfem/io/parameters.h>
+#include <pdfem/mesh/cracks.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  template <int dim, int spacedim>
+  class DoFHandler;
+  namespace parallel
+  {
+    namespace shared
+    {
+      template <int dim, int spacedim>
+      class Triangulation;
+    }
+  } // namespace parallel
+  namespace hp
+  {
+    template <int dim, int spacedim>
+    class MappingCollection;
+  }
+} // namespace dealii
+
+namespace pdfem
+{
+  namespace Coupling
+  {
+    /**
+     * A boundary condition resolved against the mesh: a named boundary (its
+     * boundary ids) or a single node at a point, one component (0..dim-1, or
+     * dim = normal for tractions) and a muparser expression of x, y, z, t.
+     */
+    template <int dim>
+    struct BoundaryCondition
+    {
+      std::string               name;
+      std::vector<unsigned int> boundary_ids;
+      bool                      at_point = false;
+      dealii::Point<dim>        point;
+      unsigned int              component = 0;
+      std::string               expression;
+    };
+
+    /** Everything the coupled system needs besides the mesh. */
+    template <int dim>
+    struct Settings
+    {
+      FE::ElasticMaterial                 material;
+      double                              horizon_factor       = 3.;
+      double                              weight_factor        = 0.33;
+      bool                                fe_nodes_in_families = true;
+      std::vector<Mesh::Crack<dim>>       cracks;
+      std::vector<BoundaryCondition<dim>> dirichlet;
+      std::vector<BoundaryCondition<dim>> traction;
+      std::vector<std::string>            body_force;
+      Parameters::LinearSolver            linear_solver;
+      /// The input file, named in error messages.
+      std::string source_file;
+    };
+
+    /** Counts that summary.json reports. */
+    struct ProblemSize
+    {
+      unsigned long n_nodes             = 0;
+      unsigned long n_pd_nodes          = 0;
+      unsigned long n_interface_nodes   = 0;
+      unsigned long n_cells             = 0;
+      unsigned long n_pd_cells          = 0;
+      unsigned long n_dofs              = 0;
+      unsigned long n_bonds             = 0;
+      unsigned long n_broken_bonds      = 0;
+      unsigned long n_decoupled_nodes   = 0;
+      unsigned long n_pd_boundary_faces = 0;
+      unsigned long n_matrix_entries    = 0;
+    };
+
+    /**
+     * Per-node results, replicated on every rank (index = node number).
+     * Stress is the PDLSM nonlocal stress at PD nodes and the extrapolated
+     * Gauss-point stress of the adjacent FE cells, all contributions averaged
+     * with equal weight (as PDLSM-FEM does).
+     */
+    template <int dim>
+    struct NodalResults
+    {
+      std::vector<dealii::Point<dim>>              position;
+      std::vector<dealii::Tensor<1, dim>>          displacement;
+      std::vector<dealii::SymmetricTensor<2, dim>> stress;
+      std::vector<double>                          damage;
+      /// 1: PD only, 2: FE only, 3: interface (PD and FE).
+      std::vector<std::uint8_t> kind;
+    };
+
+    /**
+     * The coupled PDLSM-FE problem on one mesh, one DoF numbering and one
+     * Trilinos matrix (Liu & Xin, EFM 2021, eq. 26-27; specs/004 §1.3):
+     *
+     *   sum_FE int grad(dv) : sigma dV                        (FE cells)
+     * + sum_k V_k^pd dv_k . (-L_k)                            (PD nodes)
+     * + sum_k dv_k . sigma_k^pd s_k,  s_k = int_Spd N_k n dS  (PD boundary)
+     * = int_S dv . T dS + int_V dv . b dV.
+     *
+     * FE cells are Q1 (P1 on simplices) displacement elements; PD nodes are
+     * the vertices of PD cells and share the interface nodes with the FE
+     * cells. V_k^pd is the node's share of its PD cells' volume; S_pd is the
+     * boundary of the PD region (outer boundary and PD/FE interface). The
+     * matrix is not symmetric.
+     *
+     * Parallel layout: the mesh is a parallel::shared::Triangulation (every
+     * rank has every cell); each rank assembles its own FE cells and the PD
+     * families of the nodes it owns, reading the displacement of every node
+     * within a horizon through ghost entries.
+     *
+     * Prescribed DoFs are eliminated (row and column zero, a positive diagonal
+     * entry, zero residual). A PD node whose intact bonds can no longer carry
+     * the second-order fit and that has no FE cell is "decoupled": it is held
+     * where it is in the same way, so that it never makes the matrix singular.
+     */
+    template <int dim>
+    class CoupledSystem : public Drivers::SystemInterface
+    {
+    public:
+      /// Set up nodes, families, DoFs and the sparsity pattern. @p cell_is_pd
+      /// is indexed by active cell index.
+      CoupledSystem(const dealii::parallel::shared::Triangulation<dim, dim> &tria,
+                    const std::vector<bool> &cell_is_pd,
+                    const Settings<dim>     &settings);
+      ~CoupledSystem() override;
+
+      void
+      initialize_vector(Vector &v) const override;
+      void
+      apply_dirichlet(Vector &u, double t) const override;
+      double
+      residual(const Vector &u,
+               double        t,
+               Vector       &r,
+               bool          assemble_tangent) override;
+      double
+      external_force_norm() const override;
+      unsigned int
+      solve_linear(Vector &du, const Vector &r) override;
+
+      /// Global counts (the same on every rank).
+      ProblemSize
+      size() const;
+
+      /// Names of the Dirichlet sets (boundaries or points), in input order.
+      std::vector<std::string>
+      reaction_names() const;
+
+      /// Reaction force on each Dirichlet set from the last residual() call,
+      /// for the 2D thickness: sum over its nodes of f_int - f_ext.
+      std::vector<dealii::Tensor<1, dim>>
+      reactions() const;
+
+      /// Replicated per-node displacement, stress, damage and kind.
+      NodalResults<dim>
+      nodal_results(const Vector &u) const;
+
+      /// For output: the vector DoFHandler, the per-node scalar DoFHandler and
+      /// its numbering, the mapping collection and the PD flag of the cells.
+      const dealii::DoFHandler<dim, dim> &
+      dof_handler() const;
+      const dealii::DoFHandler<dim, dim> &
+      node_dof_handler() const;
+      const std::vector<unsigned int> &
+      node_of_scalar_dof() const;
+      const dealii::hp::MappingCollection<dim, dim> &
+      mapping() const;
+      const std::vector<bool> &
+      cell_is_pd() const;
+
+    private:
+      struct Impl;
+      std::unique_ptr<Impl> impl;
+    };
+  } // namespace Coupling
+} // namespace pdfem
+
+#endif

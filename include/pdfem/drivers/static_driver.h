@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef PDFEM_DRIVERS_STATIC_DRIVER_H
+#define PDFEM_DRIVERS_STATIC_DRIVER_H
+
+#include <pdfem/drivers/system_interface.h>
+#include <pdfem/io/parameters.h>
+
+#include <functional>
+#include <ostream>
+
+namespace pdfem
+{
+  namespace Drivers
+  {
+    /** What a driver reports after each converged step. */
+    struct StepRecord
+    {
+      unsigned int step              = 0;
+      double       time              = 0.;
+      double       load_factor       = 0.;
+      unsigned int newton_iterations = 0;
+      unsigned int linear_iterations = 0;
+      /// |r| / max(|f_ext|, |r_0|) at convergence.
+      double relative_residual = 0.;
+    };
+
+    /** Wall time a driver spent per phase. */
+    struct DriverTimings
+    {
+      double assembly = 0.;
+      double solve    = 0.;
+    };
+
+    /**
+     * Static equilibrium: the load factor t goes from 0 to 1 in `Load steps`
+     * equal increments; at each, the prescribed DoFs are set to their values
+     * at t and Newton iterations K du = r, u += du run until
+     * |r| <= tol * max(|f_ext|, |r_0|). For the linear coupled PDLSM-FE
+     * problem one iteration is exact; the second residual only confirms it.
+     * No convergence in `Max iterations` throws RunFailure("diverged").
+     */
+    class StaticDriver
+    {
+    public:
+      explicit StaticDriver(const Parameters::Driver &settings);
+
+      /// @p u: initial guess in, solution out. @p on_step is called after
+      /// each converged step (before the next one changes anything);
+      /// @p progress (may be null) gets one line per step.
+      void
+      run(SystemInterface                        &system,
+          SystemInterface::Vector                &u,
+          const std::function<void(const StepRecord &)> &on_step,
+          std::ostream                           *progress);
+
+      const DriverTimings &
+      timings() const
+      {
+        return time_spent;
+      }
+
+    private:
+      Parameters::Driver settings;
+      DriverTimings      time_spent;
+    };
+  } // namespace Drivers
+} // namespace pdfem
+
+#endif

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef PDFEM_DRIVERS_SYSTEM_INTERFACE_H
+#define PDFEM_DRIVERS_SYSTEM_INTERFACE_H
+
+namespace dealii
+{
+  namespace TrilinosWrappers
+  {
+    namespace MPI
+    {
+      class Vector;
+    }
+  } // namespace TrilinosWrappers
+} // namespace dealii
+
+namespace pdfem
+{
+  namespace Drivers
+  {
+    /**
+     * What a load or time driver sees of a discretised problem: vectors in,
+     * vectors out, no dimension. The sign convention is the same everywhere
+     * in pdfem: internal force f_int(u), residual r = f_ext - f_int, tangent
+     * K = d f_int / d u, Newton step K du = r.
+     *
+     * The load factor t scales the prescribed displacements and loads (it is
+     * the variable t of their expressions).
+     */
+    class SystemInterface
+    {
+    public:
+      using Vector = dealii::TrilinosWrappers::MPI::Vector;
+
+      virtual ~SystemInterface() = default;
+
+      /// Give @p v the parallel layout of the unknowns (zero).
+      virtual void
+      initialize_vector(Vector &v) const = 0;
+
+      /// Set the prescribed DoFs of @p u to their values at load factor @p t.
+      virtual void
+      apply_dirichlet(Vector &u, double t) const = 0;
+
+      /**
+       * r = f_ext(t) - f_int(u) with the prescribed (and decoupled) DoFs set
+       * to zero; if @p assemble_tangent, also assemble K(u). Records the
+       * reaction forces. Returns |r|.
+       */
+      virtual double
+      residual(const Vector &u,
+               double        t,
+               Vector       &r,
+               bool          assemble_tangent) = 0;
+
+      /// |f_ext| of the last residual() call (free DoFs).
+      virtual double
+      external_force_norm() const = 0;
+
+      /// Solve K du = r with the last assembled K; returns the iterations.
+      virtual unsigned int
+      solve_linear(Vector &du, const Vector &r) = 0;
+    };
+  } // namespace Drivers
+} // namespace pdfem
+
+#endif

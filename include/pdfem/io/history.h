@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef PDFEM_IO_HISTORY_H
+#define PDFEM_IO_HISTORY_H
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace pdfem
+{
+  namespace IO
+  {
+    /**
+     * history.csv: one row per load or time step, columns named once in the
+     * header, flushed after every row so that a long run can be watched (and
+     * a stopped run keeps what it did). Only the rank that opened it writes.
+     */
+    class History
+    {
+    public:
+      /// Open @p file and write the header; if !@p active, do nothing at all.
+      History(const std::string              &file,
+              const std::vector<std::string> &columns,
+              bool                            active);
+
+      /// One row, in the order of the columns.
+      void
+      add_row(const std::vector<double> &values);
+
+      /// Turn a set name ("left", "(0, -0.5)") into a column-name part.
+      static std::string
+      column_name(const std::string &name);
+
+    private:
+      std::ofstream out;
+      std::size_t   n_columns;
+    };
+  } // namespace IO
+} // namespace pdfem
+
+#endif

@@ -1,0 +1,192 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef PDFEM_IO_PARAMETERS_H
+#define PDFEM_IO_PARAMETERS_H
+
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace pdfem
+{
+  /**
+   * The parameters of one scene (a `.prm` file), grouped by module. Each group
+   * declares its entries (with defaults and documentation, printed by
+   * `pdfem --print-parameters`) and parses and validates them; a bad value
+   * throws InputError naming the file, the parameter and the allowed values.
+   */
+  namespace Parameters
+  {
+    /** `subsection Mesh`: where the cells come from and which are PD. */
+    struct Mesh
+    {
+      /// A gmsh `.msh` file, or a `.geo` script meshed with the gmsh executable.
+      std::string input_file;
+      /// Global refinements applied after reading.
+      unsigned int refinements = 0;
+      /// For .geo input: gmsh's -clscale (every element size times this).
+      double size_factor = 1.;
+      /// Physical names of the PD cells; "all" or "none" are also allowed.
+      std::vector<std::string> pd_regions;
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm, const std::string &file);
+    };
+
+    /** The 2D kinematic assumption. */
+    enum class PlaneModel
+    {
+      plane_stress,
+      plane_strain
+    };
+
+    /** `subsection Material`: isotropic linear elasticity (FE and PD alike). */
+    struct Material
+    {
+      double     youngs_modulus  = 0.;   // E   [Pa]
+      double     poissons_ratio  = 0.;   // nu  [-]
+      double     density         = 0.;   // rho [kg/m^3]
+      PlaneModel plane           = PlaneModel::plane_stress;
+      double     thickness       = 1.;   // 2D only [m]; forces are per this thickness
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm, const std::string &file, int dim);
+    };
+
+    /** `subsection Peridynamics`: the PD discretisation of the PD cells. */
+    struct Peridynamics
+    {
+      std::string model = "pdlsm";
+      /// m in delta_i = m * Delta_i, Delta_i = V_i^(1/dim).
+      double horizon_factor = 3.;
+      /// a in omega = exp(-(|xi| / (a delta))^2).
+      double weight_factor = 0.33;
+      /// Whether FE-only nodes may be family members ("all nodes"), or only
+      /// PD nodes ("pd nodes").
+      bool fe_nodes_in_families = true;
+      /// Pre-existing cracks: 2D segments "(x1, y1) -- (x2, y2)", 3D
+      /// triangles "(x,y,z) -- (x,y,z) -- (x,y,z)", separated by ';'.
+      std::vector<std::vector<std::array<double, 3>>> cracks;
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm, const std::string &file, int dim);
+    };
+
+    /**
+     * One boundary condition: "name: component = expression", component one
+     * of x, y, z (and `normal` for tractions); the expression is a muparser
+     * function of x, y, z and t.
+     */
+    struct BoundaryEntry
+    {
+      std::string  boundary;
+      unsigned int component = 0; // 0..dim-1, or dim for "normal"
+      std::string  expression;
+    };
+
+    /** `subsection Boundary conditions`. */
+    struct BoundaryConditions
+    {
+      std::vector<BoundaryEntry> dirichlet;
+      std::vector<BoundaryEntry> traction;
+      std::vector<std::string>   body_force; // dim expressions of x, y, z, t
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm, const std::string &file, int dim);
+    };
+
+    /** `subsection Linear solver`. */
+    struct LinearSolver
+    {
+      std::string  type           = "direct"; // direct | gmres
+      std::string  direct_solver  = "mumps";  // mumps | klu
+      std::string  preconditioner = "amg";    // amg | ilu
+      double       tolerance      = 1e-10;    // relative residual (gmres)
+      unsigned int max_iterations = 2000;
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm, const std::string &file);
+    };
+
+    /** `subsection Driver`. */
+    struct Driver
+    {
+      std::string  type       = "static";
+      unsigned int load_steps = 1;
+      double       residual_tolerance = 1e-9; // relative to |f_ext| (or |r_0|)
+      unsigned int max_iterations     = 10;
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm, const std::string &file);
+    };
+
+    /** `subsection Output`. */
+    struct Output
+    {
+      std::string directory;      // empty: "output-<scene name>"
+      bool        write_vtu       = true;
+      bool        write_nodes_csv = false;
+      bool        print_timings   = false;
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm, const std::string &file);
+    };
+
+    /** All of a scene's parameters. */
+    struct Scene
+    {
+      int                dim = 2;
+      std::string        file;      // the .prm file (for messages)
+      std::string        base_dir;  // its folder: relative paths start here
+      std::string        name;      // its stem: default output folder name
+      Mesh               mesh;
+      Material           material;
+      Peridynamics       peridynamics;
+      BoundaryConditions boundary_conditions;
+      LinearSolver       linear_solver;
+      Driver             driver;
+      Output             output;
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      /**
+       * Read and validate @p file (throws InputError). Each of @p overrides
+       * ("Section/Subsection/Entry", "value") replaces the file's value, as
+       * `pdfem --set` does.
+       */
+      void
+      read(const std::string                                       &file,
+           const std::vector<std::pair<std::string, std::string>> &overrides =
+             {});
+    };
+
+    /** Read `set Dimension = 2|3` from a parameter file before anything else. */
+    int
+    read_dimension(const std::string &file);
+
+    /** Print every parameter with its default and documentation. */
+    void
+    print_all(std::ostream &out);
+  } // namespace Parameters
+} // namespace pdfem
+
+#endif

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef PDFEM_SOLVERS_LINEAR_SOLVER_H
+#define PDFEM_SOLVERS_LINEAR_SOLVER_H
+
+#include <pdfem/io/parameters.h>
+
+#include <memory>
+#include <vector>
+
+namespace dealii
+{
+  namespace TrilinosWrappers
+  {
+    class SparseMatrix;
+    namespace MPI
+    {
+      class Vector;
+    }
+  } // namespace TrilinosWrappers
+} // namespace dealii
+
+namespace pdfem
+{
+  namespace Solvers
+  {
+    /**
+     * Solves K x = b for the coupled, non-symmetric matrix: a direct sparse
+     * LU (Amesos MUMPS or KLU) or restarted GMRES preconditioned with
+     * Trilinos ML algebraic multigrid or ILU. (MueLu is not available in
+     * Debian's deal.II 9.4 build.) A failed or non-finite solve throws
+     * RunFailure with exit state "singular matrix" (direct) or "linear solver
+     * diverged" (iterative).
+     */
+    class LinearSolver
+    {
+    public:
+      explicit LinearSolver(const Parameters::LinearSolver &settings);
+      ~LinearSolver();
+
+      /**
+       * Rigid-body-free constant modes for AMG (one mask per component over
+       * the locally owned DoFs), set once per DoF layout.
+       */
+      void
+      set_constant_modes(const std::vector<std::vector<bool>> &modes);
+
+      /// Solve; returns the number of iterations (1 for direct).
+      unsigned int
+      solve(const dealii::TrilinosWrappers::SparseMatrix &K,
+            dealii::TrilinosWrappers::MPI::Vector        &x,
+            const dealii::TrilinosWrappers::MPI::Vector  &b);
+
+    private:
+      Parameters::LinearSolver         settings;
+      std::vector<std::vector<bool>>   constant_modes;
+    };
+  } // namespace Solvers
+} // namespace pdfem
+
+#endif

@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Private state of Coupling::CoupledSystem, shared by its translation units.
+#ifndef PDFEM_SOURCE_COUPLING_COUPLED_SYSTEM_IMPL_H
+#define PDFEM_SOURCE_COUPLING_COUPLED_SYSTEM_IMPL_H
+
+#include <pdfem/coupling/coupled_system.h>
+#include <pdfem/pd/families.h>
+#include <pdfem/pd_models/pdlsm.h>
+#include <pdfem/solvers/linear_solver.h>
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_fe.h>
+#include <deal.II/hp/fe_collection.h>
+#include <deal.II/hp/mapping_collection.h>
+#include <deal.II/hp/q_collection.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace pdfem
+{
+  namespace Coupling
+  {
+    using dealii::types::global_dof_index;
+
+    template <int dim>
+    struct CoupledSystem<dim>::Impl
+    {
+      Impl(const dealii::parallel::shared::Triangulation<dim, dim> &tria,
+           const std::vector<bool>                                 &cell_is_pd,
+           const Settings<dim>                                     &settings);
+
+      // ----- set-up steps (coupled_system_setup.cc)
+      void
+      make_fe_and_dofs();
+      void
+      make_nodes();
+      void
+      make_pd_boundary();
+      void
+      make_families();
+      void
+      make_sparsity();
+      void
+      make_boundary_conditions();
+
+      // ----- assembly (coupled_system_assembly.cc)
+      /// FE cells and PD families: f_int (all DoFs) and, if wanted, K.
+      void
+      assemble_internal(const dealii::TrilinosWrappers::MPI::Vector &u_ghosted,
+                        bool assemble_tangent);
+      void
+      assemble_external(double t);
+      /// Add a local block (rows x cols) to K with prescribed DoFs eliminated.
+      void
+      add_to_matrix(const std::vector<global_dof_index> &rows,
+                    const std::vector<global_dof_index> &cols,
+                    const std::vector<double>           &values);
+
+      /**
+       * PDLSM weights of family @p o over all its members, broken or not
+       * (in member order): the shape matrix belongs to the initial family
+       * and bond states enter only the sums (PDLSM-FEM, specs/004 §1.2).
+       * Refitting over the intact bonds alone would reproduce a uniform
+       * strain across a crack exactly, so that the crack would carry load.
+       */
+      bool
+      family_weights(std::size_t                           o,
+                     std::vector<dealii::Tensor<1, dim>>          &a,
+                     std::vector<dealii::SymmetricTensor<2, dim>> &b) const;
+
+      /// Owners without any intact bond and without FE cells: nothing ties
+      /// them to the body any more, so they are held where they are.
+      void
+      update_decoupled();
+
+      MPI_Comm                                                 comm;
+      const dealii::parallel::shared::Triangulation<dim, dim> &tria;
+      std::vector<bool>                                        cell_pd;
+      Settings<dim>                                            settings;
+      PDModels::PDLSM<dim>                                     pdlsm;
+
+      dealii::hp::FECollection<dim>      fe;        // FE_Q(1)^dim, P1^dim
+      dealii::hp::FECollection<dim>      fe_scalar; // FE_Q(1), P1
+      dealii::hp::MappingCollection<dim> mapping;
+      dealii::hp::QCollection<dim>       quadrature;
+      dealii::hp::QCollection<dim - 1>   face_quadrature;
+      dealii::DoFHandler<dim>            dofs;
+      dealii::DoFHandler<dim>            node_dofs_handler;
+
+      // ----- nodes (replicated: every rank knows every node)
+      unsigned int                                     n_nodes = 0;
+      std::vector<unsigned int>                        vertex_to_node;
+      std::vector<dealii::Point<dim>>                  x;
+      std::vector<double>                              volume;    // all cells
+      std::vector<double>                              pd_volume; // PD cells
+      std::vector<double>                              horizon;
+      std::vector<std::uint8_t>                        is_pd, is_fe;
+      std::vector<unsigned int>                        n_fe_cells;
+      std::vector<std::array<global_dof_index, dim>>   node_dof;
+      std::vector<unsigned int>                        node_of_scalar;
+      std::vector<unsigned int>                        dof_to_node;
+      std::vector<dealii::Tensor<1, dim>>              boundary_area; // s_k
+      unsigned long                                    n_pd_boundary_faces = 0;
+
+      // ----- ownership and PD families
+      dealii::IndexSet          owned, relevant;
+      std::vector<unsigned int> owned_nodes;
+      PD::Families              families; // owners = owned PD nodes
+      std::vector<std::uint8_t> decoupled; // per family owner (see above)
+
+      // ----- boundary conditions
+      std::vector<std::uint8_t>   dof_fixed;   // all DoFs (replicated)
+      std::vector<int>            dof_dirichlet; // condition index or -1
+      std::vector<std::unique_ptr<dealii::FunctionParser<3>>> dirichlet_fn;
+      std::vector<std::string>                 set_names;
+      std::vector<std::vector<unsigned int>>   set_nodes;
+      std::vector<std::unique_ptr<dealii::FunctionParser<3>>> traction_fn;
+      std::unique_ptr<dealii::FunctionParser<3>>                body_fn;
+
+      // ----- linear algebra
+      dealii::TrilinosWrappers::SparseMatrix matrix;
+      dealii::TrilinosWrappers::MPI::Vector  f_int, f_ext, u_ghosted;
+      Solvers::LinearSolver                  solver;
+      double                                 f_ext_norm = 0.;
+      std::vector<dealii::Tensor<1, dim>>    last_reactions;
+      std::size_t                            n_matrix_entries = 0;
+    };
+  } // namespace Coupling
+} // namespace pdfem
+
+#endif

@@ -1,0 +1,559 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// CoupledSystem: construction, nodes, families, sparsity, boundary conditions.
+#include <pdfem/base/config.h>
+#include <pdfem/base/exceptions.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/hp/fe_values.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+
+#include "coupled_system_impl.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace pdfem
+{
+  namespace Coupling
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /// The expression variables are always x, y, z, t (z = 0 in 2D).
+      std::unique_ptr<FunctionParser<3>>
+      make_function(const std::vector<std::string> &expressions)
+      {
+        auto f = std::make_unique<FunctionParser<3>>(expressions.size());
+        f->initialize("x,y,z,t",
+                      expressions,
+                      std::map<std::string, double>(),
+                      true);
+        return f;
+      }
+    } // namespace
+
+    template <int dim>
+    CoupledSystem<dim>::Impl::Impl(
+      const parallel::shared::Triangulation<dim, dim> &tria,
+      const std::vector<bool>                          &cell_is_pd,
+      const Settings<dim>                              &settings)
+      : comm(tria.get_communicator())
+      , tria(tria)
+      , cell_pd(cell_is_pd)
+      , settings(settings)
+      , pdlsm(settings.material.lambda(),
+              settings.material.mu(),
+              settings.weight_factor)
+      , dofs(tria)
+      , node_dofs_handler(tria)
+      , solver(settings.linear_solver)
+    {}
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::make_fe_and_dofs()
+    {
+      fe.push_back(FESystem<dim>(FE_Q<dim>(1), dim));
+      fe.push_back(FESystem<dim>(FE_SimplexP<dim>(1), dim));
+      fe_scalar.push_back(FE_Q<dim>(1));
+      fe_scalar.push_back(FE_SimplexP<dim>(1));
+      mapping.push_back(MappingFE<dim>(FE_Q<dim>(1)));
+      mapping.push_back(MappingFE<dim>(FE_SimplexP<dim>(1)));
+      quadrature.push_back(QGauss<dim>(2));
+      quadrature.push_back(QGaussSimplex<dim>(2));
+      if constexpr (dim == 2)
+        {
+          face_quadrature.push_back(QGauss<1>(2));
+          face_quadrature.push_back(QGauss<1>(2));
+        }
+      else
+        {
+          face_quadrature.push_back(QGauss<dim - 1>(2));
+          face_quadrature.push_back(QGaussSimplex<dim - 1>(2));
+        }
+
+      for (DoFHandler<dim> *handler : {&dofs, &node_dofs_handler})
+        {
+          for (const auto &cell : handler->active_cell_iterators())
+            if (cell->is_locally_owned())
+              cell->set_active_fe_index(
+                cell->reference_cell().is_hyper_cube() ? 0 : 1);
+        }
+      dofs.distribute_dofs(fe);
+      node_dofs_handler.distribute_dofs(fe_scalar);
+      owned = dofs.locally_owned_dofs();
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::make_nodes()
+    {
+      constexpr auto invalid = numbers::invalid_unsigned_int;
+      vertex_to_node.assign(tria.n_vertices(), invalid);
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const unsigned int v : cell->vertex_indices())
+          if (vertex_to_node[cell->vertex_index(v)] == invalid)
+            vertex_to_node[cell->vertex_index(v)] = n_nodes++;
+
+      x.resize(n_nodes);
+      volume.assign(n_nodes, 0.);
+      pd_volume.assign(n_nodes, 0.);
+      is_pd.assign(n_nodes, 0);
+      is_fe.assign(n_nodes, 0);
+      n_fe_cells.assign(n_nodes, 0);
+      node_dof.resize(n_nodes);
+      node_of_scalar.assign(node_dofs_handler.n_dofs(), invalid);
+      dof_to_node.assign(dofs.n_dofs(), invalid);
+
+      hp::FEValues<dim> volume_values(mapping,
+                                      fe_scalar,
+                                      quadrature,
+                                      update_JxW_values);
+      auto              scalar_cell = node_dofs_handler.begin_active();
+      std::vector<types::global_dof_index> scalar_dofs;
+      for (const auto &cell : dofs.active_cell_iterators())
+        {
+          volume_values.reinit(scalar_cell);
+          double cell_volume = 0.;
+          for (const double w :
+               volume_values.get_present_fe_values().get_JxW_values())
+            cell_volume += w;
+          const bool   pd    = cell_pd[cell->active_cell_index()];
+          const double share = cell_volume / cell->n_vertices();
+          const auto   index = cell->active_fe_index();
+          scalar_dofs.resize(scalar_cell->get_fe().n_dofs_per_cell());
+          scalar_cell->get_dof_indices(scalar_dofs);
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const unsigned int k = vertex_to_node[cell->vertex_index(v)];
+              x[k]                 = cell->vertex(v);
+              volume[k] += share;
+              if (pd)
+                {
+                  pd_volume[k] += share;
+                  is_pd[k] = 1;
+                }
+              else
+                {
+                  is_fe[k] = 1;
+                  ++n_fe_cells[k];
+                }
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  node_dof[k][c] = cell->vertex_dof_index(v, c, index);
+                  dof_to_node[node_dof[k][c]] = k;
+                }
+              // Scalar Q1/P1: shape function v lives on vertex v.
+              node_of_scalar[scalar_dofs[v]] = k;
+            }
+          ++scalar_cell;
+        }
+
+      horizon.resize(n_nodes);
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        horizon[k] =
+          settings.horizon_factor * std::pow(volume[k], 1. / dim);
+
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        if (owned.is_element(node_dof[k][0]))
+          owned_nodes.push_back(k);
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::make_pd_boundary()
+    {
+      // s_k = int_{S_pd} N_k n dS over the faces of PD cells that lie on the
+      // domain boundary or on the PD/FE interface (outward from the PD cell).
+      boundary_area.assign(n_nodes, Tensor<1, dim>());
+      hp::FEFaceValues<dim> face_values(mapping,
+                                        fe_scalar,
+                                        face_quadrature,
+                                        update_values | update_normal_vectors |
+                                          update_JxW_values);
+      for (const auto &cell : node_dofs_handler.active_cell_iterators())
+        {
+          if (!cell_pd[cell->active_cell_index()])
+            continue;
+          for (const unsigned int f : cell->face_indices())
+            {
+              const bool on_pd_boundary =
+                cell->at_boundary(f) ||
+                !cell_pd[cell->neighbor(f)->active_cell_index()];
+              if (!on_pd_boundary)
+                continue;
+              ++n_pd_boundary_faces;
+              face_values.reinit(cell, f);
+              const FEFaceValues<dim> &fv =
+                face_values.get_present_fe_values();
+              for (const unsigned int v : cell->vertex_indices())
+                {
+                  Tensor<1, dim> s;
+                  for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
+                    s += fv.shape_value(v, q) * fv.normal_vector(q) *
+                         fv.JxW(q);
+                  boundary_area[vertex_to_node[cell->vertex_index(v)]] += s;
+                }
+            }
+        }
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::make_families()
+    {
+      std::vector<unsigned int> owners;
+      for (const unsigned int k : owned_nodes)
+        if (is_pd[k])
+          owners.push_back(k);
+      std::vector<std::uint8_t> may_be_member(n_nodes, 1);
+      if (!settings.fe_nodes_in_families)
+        may_be_member = is_pd;
+      families = PD::find_families(x, horizon, owners, may_be_member);
+
+      // Every family must carry the second-order fit: if one cannot, the
+      // horizon is too small for the mesh (or the weight too narrow).
+      std::vector<Tensor<1, dim>>          a;
+      std::vector<SymmetricTensor<2, dim>> b;
+      const auto fit_fails = [&](const std::size_t o) {
+        return !family_weights(o, a, b);
+      };
+      unsigned int n_bad = 0;
+      std::size_t  first_bad = 0;
+      for (std::size_t o = 0; o < families.owners.size(); ++o)
+        if (fit_fails(o) && n_bad++ == 0)
+          first_bad = o;
+      const unsigned int n_bad_total = Utilities::MPI::sum(n_bad, comm);
+      if (n_bad_total > 0)
+        {
+          std::ostringstream where;
+          if (n_bad > 0)
+            where << " (e.g. the node at (" << x[families.owners[first_bad]]
+                  << ") with "
+                  << families.offsets[first_bad + 1] - families.offsets[first_bad]
+                  << " members)";
+          throw InputError(
+            settings.source_file,
+            "Peridynamics/Horizon factor",
+            std::to_string(n_bad_total) +
+              " PD node(s) have too few effective family members for the "
+              "second-order PDLSM fit with m = " +
+              number(settings.horizon_factor) + ", a = " +
+              number(settings.weight_factor) + where.str(),
+            "a larger Horizon factor or Weight factor (m >= 3 with a >= "
+            "0.25 is safe on quads and hexes)");
+        }
+
+      // Bonds crossing a pre-existing crack are cut for good.
+      if (!settings.cracks.empty())
+        for (std::size_t o = 0; o < families.owners.size(); ++o)
+          for (std::size_t b = families.offsets[o];
+               b < families.offsets[o + 1];
+               ++b)
+            if (Mesh::cut_by_any(settings.cracks,
+                                 x[families.owners[o]],
+                                 x[families.members[b]]))
+              families.intact[b] = 0;
+
+      update_decoupled();
+
+      relevant = owned;
+      std::vector<types::global_dof_index> extra;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int c = 0; c < dim; ++c)
+              extra.push_back(
+                node_dof[vertex_to_node[cell->vertex_index(v)]][c]);
+      for (const unsigned int m : families.members)
+        for (unsigned int c = 0; c < dim; ++c)
+          extra.push_back(node_dof[m][c]);
+      std::sort(extra.begin(), extra.end());
+      extra.erase(std::unique(extra.begin(), extra.end()), extra.end());
+      relevant.add_indices(extra.begin(), extra.end());
+      relevant.compress();
+    }
+
+    template <int dim>
+    bool
+    CoupledSystem<dim>::Impl::family_weights(
+      const std::size_t                     o,
+      std::vector<Tensor<1, dim>>          &a,
+      std::vector<SymmetricTensor<2, dim>> &b) const
+    {
+      static thread_local std::vector<Tensor<1, dim>> xi;
+      static thread_local std::vector<double>         vol;
+      const unsigned int                              k = families.owners[o];
+      xi.clear();
+      vol.clear();
+      for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
+           ++j)
+        {
+          xi.push_back(x[families.members[j]] - x[k]);
+          vol.push_back(volume[families.members[j]]);
+        }
+      return pdlsm.compute_weights(xi, vol, horizon[k], a, b);
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::update_decoupled()
+    {
+      decoupled.assign(families.owners.size(), 0);
+      for (std::size_t o = 0; o < families.owners.size(); ++o)
+        decoupled[o] =
+          !is_fe[families.owners[o]] &&
+          std::none_of(families.intact.begin() + families.offsets[o],
+                       families.intact.begin() + families.offsets[o + 1],
+                       [](const std::uint8_t i) { return i != 0; });
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::make_sparsity()
+    {
+      TrilinosWrappers::SparsityPattern    sp(owned, owned, relevant, comm);
+      std::vector<types::global_dof_index> local;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned() && !cell_pd[cell->active_cell_index()])
+          {
+            local.resize(cell->get_fe().n_dofs_per_cell());
+            cell->get_dof_indices(local);
+            std::vector<types::global_dof_index> sorted(local);
+            std::sort(sorted.begin(), sorted.end());
+            for (const auto row : local)
+              sp.add_entries(row, sorted.begin(), sorted.end(), true);
+          }
+      std::vector<types::global_dof_index> cols;
+      for (std::size_t o = 0; o < families.owners.size(); ++o)
+        {
+          const unsigned int k = families.owners[o];
+          cols.clear();
+          for (unsigned int c = 0; c < dim; ++c)
+            cols.push_back(node_dof[k][c]);
+          for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
+               ++j)
+            for (unsigned int c = 0; c < dim; ++c)
+              cols.push_back(node_dof[families.members[j]][c]);
+          std::sort(cols.begin(), cols.end());
+          for (unsigned int c = 0; c < dim; ++c)
+            sp.add_entries(node_dof[k][c], cols.begin(), cols.end(), true);
+        }
+      // Every owned row gets its diagonal (prescribed or decoupled DoFs).
+      for (const auto i : owned)
+        sp.add(i, i);
+      sp.compress();
+      matrix.reinit(sp);
+      n_matrix_entries = matrix.n_nonzero_elements();
+
+      f_int.reinit(owned, relevant, comm, true);
+      f_ext.reinit(owned, relevant, comm, true);
+      u_ghosted.reinit(owned, relevant, comm);
+
+      // Constant (translation) modes over the owned DoFs, for AMG.
+      std::vector<std::vector<bool>> modes(
+        dim, std::vector<bool>(owned.n_elements(), false));
+      for (unsigned int i = 0; i < owned.n_elements(); ++i)
+        {
+          const auto dof = owned.nth_index_in_set(i);
+          const auto k   = dof_to_node[dof];
+          for (unsigned int c = 0; c < dim; ++c)
+            if (node_dof[k][c] == dof)
+              modes[c][i] = true;
+        }
+      solver.set_constant_modes(modes);
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::make_boundary_conditions()
+    {
+      // Nodes of each named set (boundary or point), in input order.
+      auto set_of = [&](const BoundaryCondition<dim> &bc) -> unsigned int {
+        const auto it = std::find(set_names.begin(), set_names.end(), bc.name);
+        if (it != set_names.end())
+          return it - set_names.begin();
+        std::vector<unsigned int> nodes;
+        if (bc.at_point)
+          {
+            double       best = std::numeric_limits<double>::max();
+            unsigned int node = 0;
+            Point<dim>   lo = x[0], hi = x[0];
+            for (unsigned int k = 0; k < n_nodes; ++k)
+              {
+                if (x[k].distance(bc.point) < best)
+                  {
+                    best = x[k].distance(bc.point);
+                    node = k;
+                  }
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    lo[d] = std::min(lo[d], x[k][d]);
+                    hi[d] = std::max(hi[d], x[k][d]);
+                  }
+              }
+            if (best > 1e-6 * lo.distance(hi))
+              throw InputError(settings.source_file,
+                               "Boundary conditions/Dirichlet",
+                               "no mesh node at the point " + bc.name +
+                                 " (the nearest is " + number(best) +
+                                 " away)",
+                               "a boundary name, or a point that is a mesh "
+                               "node");
+            nodes.push_back(node);
+          }
+        else
+          {
+            for (const auto &cell : tria.active_cell_iterators())
+              for (const unsigned int f : cell->face_indices())
+                if (cell->at_boundary(f) &&
+                    std::find(bc.boundary_ids.begin(),
+                              bc.boundary_ids.end(),
+                              cell->face(f)->boundary_id()) !=
+                      bc.boundary_ids.end())
+                  for (const unsigned int v : cell->face(f)->vertex_indices())
+                    nodes.push_back(
+                      vertex_to_node[cell->face(f)->vertex_index(v)]);
+            std::sort(nodes.begin(), nodes.end());
+            nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+          }
+        set_names.push_back(bc.name);
+        set_nodes.push_back(nodes);
+        return set_names.size() - 1;
+      };
+
+      dof_fixed.assign(dofs.n_dofs(), 0);
+      dof_dirichlet.assign(dofs.n_dofs(), -1);
+      for (unsigned int c = 0; c < settings.dirichlet.size(); ++c)
+        {
+          const auto &bc = settings.dirichlet[c];
+          dirichlet_fn.push_back(make_function({bc.expression}));
+          for (const unsigned int k : set_nodes[set_of(bc)])
+            {
+              const auto dof = node_dof[k][bc.component];
+              if (!dof_fixed[dof]) // the first condition on a DoF counts
+                {
+                  dof_fixed[dof]     = 1;
+                  dof_dirichlet[dof] = c;
+                }
+            }
+        }
+      for (const auto &bc : settings.traction)
+        traction_fn.push_back(make_function({bc.expression}));
+      if (!settings.body_force.empty())
+        body_fn = make_function(settings.body_force);
+      last_reactions.assign(set_names.size(), Tensor<1, dim>());
+    }
+
+    // ------------------------------------------------------------ public
+    template <int dim>
+    CoupledSystem<dim>::CoupledSystem(
+      const parallel::shared::Triangulation<dim, dim> &tria,
+      const std::vector<bool>                          &cell_is_pd,
+      const Settings<dim>                              &settings)
+      : impl(std::make_unique<Impl>(tria, cell_is_pd, settings))
+    {
+      impl->make_fe_and_dofs();
+      impl->make_nodes();
+      impl->make_boundary_conditions();
+      impl->make_pd_boundary();
+      impl->make_families();
+      impl->make_sparsity();
+    }
+
+    template <int dim>
+    CoupledSystem<dim>::~CoupledSystem() = default;
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::initialize_vector(Vector &v) const
+    {
+      v.reinit(impl->owned, impl->comm);
+    }
+
+    template <int dim>
+    ProblemSize
+    CoupledSystem<dim>::size() const
+    {
+      const Impl &s = *impl;
+      ProblemSize p;
+      p.n_nodes = s.n_nodes;
+      for (unsigned int k = 0; k < s.n_nodes; ++k)
+        {
+          p.n_pd_nodes += s.is_pd[k];
+          p.n_interface_nodes += s.is_pd[k] && s.is_fe[k];
+        }
+      p.n_cells = s.tria.n_active_cells();
+      for (const bool pd : s.cell_pd)
+        p.n_pd_cells += pd;
+      p.n_dofs              = s.dofs.n_dofs();
+      p.n_pd_boundary_faces = s.n_pd_boundary_faces;
+      p.n_bonds = Utilities::MPI::sum<unsigned long>(s.families.n_bonds(),
+                                                     s.comm);
+      p.n_broken_bonds =
+        Utilities::MPI::sum<unsigned long>(s.families.n_broken(), s.comm);
+      unsigned long n_decoupled = 0;
+      for (const std::uint8_t d : s.decoupled)
+        n_decoupled += d;
+      p.n_decoupled_nodes = Utilities::MPI::sum(n_decoupled, s.comm);
+      p.n_matrix_entries  = s.n_matrix_entries;
+      return p;
+    }
+
+    template <int dim>
+    std::vector<std::string>
+    CoupledSystem<dim>::reaction_names() const
+    {
+      return impl->set_names;
+    }
+
+    template <int dim>
+    std::vector<Tensor<1, dim>>
+    CoupledSystem<dim>::reactions() const
+    {
+      return impl->last_reactions;
+    }
+
+    template <int dim>
+    const DoFHandler<dim, dim> &
+    CoupledSystem<dim>::dof_handler() const
+    {
+      return impl->dofs;
+    }
+
+    template <int dim>
+    const DoFHandler<dim, dim> &
+    CoupledSystem<dim>::node_dof_handler() const
+    {
+      return impl->node_dofs_handler;
+    }
+
+    template <int dim>
+    const std::vector<unsigned int> &
+    CoupledSystem<dim>::node_of_scalar_dof() const
+    {
+      return impl->node_of_scalar;
+    }
+
+    template <int dim>
+    const hp::MappingCollection<dim, dim> &
+    CoupledSystem<dim>::mapping() const
+    {
+      return impl->mapping;
+    }
+
+    template <int dim>
+    const std::vector<bool> &
+    CoupledSystem<dim>::cell_is_pd() const
+    {
+      return impl->cell_pd;
+    }
+
+#define INSTANTIATE(dim) template class CoupledSystem<dim>;
+    PDFEM_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace Coupling
+} // namespace pdfem

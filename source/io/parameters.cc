@@ -1,0 +1,671 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <pdfem/base/exceptions.h>
+#include <pdfem/io/parameters.h>
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace pdfem
+{
+  namespace Parameters
+  {
+    using dealii::ParameterHandler;
+    using dealii::Patterns::Anything;
+    using dealii::Patterns::Bool;
+    using dealii::Patterns::Double;
+    using dealii::Patterns::Integer;
+    using dealii::Patterns::Selection;
+
+    namespace
+    {
+      std::string
+      trim(const std::string &s)
+      {
+        const auto b = s.find_first_not_of(" \t\r\n");
+        if (b == std::string::npos)
+          return "";
+        const auto e = s.find_last_not_of(" \t\r\n");
+        return s.substr(b, e - b + 1);
+      }
+
+      std::vector<std::string>
+      split(const std::string &s, const char delimiter)
+      {
+        std::vector<std::string> parts;
+        std::stringstream        in(s);
+        std::string              part;
+        while (std::getline(in, part, delimiter))
+          if (!trim(part).empty())
+            parts.push_back(trim(part));
+        return parts;
+      }
+
+      /// Check that a muparser expression of x, y, z, t parses.
+      void
+      check_expression(const std::string &expression,
+                       const std::string &file,
+                       const std::string &parameter)
+      {
+        try
+          {
+            dealii::FunctionParser<3> f(1);
+            f.initialize("x,y,z,t",
+                         expression,
+                         std::map<std::string, double>(),
+                         true);
+            (void)f.value(dealii::Point<3>());
+          }
+        catch (...)
+          {
+            throw InputError(file,
+                             parameter,
+                             "cannot parse the expression '" + expression +
+                               "'",
+                             "a muparser expression of x, y, z and t");
+          }
+      }
+
+      std::vector<BoundaryEntry>
+      parse_boundary_entries(const std::string &text,
+                             const std::string &file,
+                             const std::string &parameter,
+                             const int          dim,
+                             const bool         allow_normal)
+      {
+        const std::string allowed_components =
+          std::string(dim == 2 ? "x, y" : "x, y, z") +
+          (allow_normal ? ", normal" : "");
+        const std::string form =
+          "'boundary name: component = expression', separated by ';', "
+          "component one of " +
+          allowed_components;
+        std::vector<BoundaryEntry> entries;
+        for (const std::string &item : split(text, ';'))
+          {
+            const auto colon = item.find(':');
+            const auto equal = item.find('=');
+            if (colon == std::string::npos || equal == std::string::npos ||
+                equal < colon)
+              throw InputError(file,
+                               parameter,
+                               "cannot read '" + item + "'",
+                               form);
+            BoundaryEntry entry;
+            entry.boundary         = trim(item.substr(0, colon));
+            const std::string comp = trim(item.substr(colon + 1, equal - colon - 1));
+            entry.expression       = trim(item.substr(equal + 1));
+            if (comp == "x")
+              entry.component = 0;
+            else if (comp == "y")
+              entry.component = 1;
+            else if (comp == "z" && dim == 3)
+              entry.component = 2;
+            else if (comp == "normal" && allow_normal)
+              entry.component = dim;
+            else
+              throw InputError(file,
+                               parameter,
+                               "unknown component '" + comp + "' in '" + item +
+                                 "'",
+                               allowed_components);
+            if (entry.boundary.empty() || entry.expression.empty())
+              throw InputError(file,
+                               parameter,
+                               "cannot read '" + item + "'",
+                               form);
+            check_expression(entry.expression, file, parameter);
+            entries.push_back(entry);
+          }
+        return entries;
+      }
+
+      std::array<double, 3>
+      parse_point(const std::string &text,
+                  const std::string &file,
+                  const std::string &parameter,
+                  const int          dim)
+      {
+        std::string s = trim(text);
+        if (s.size() < 2 || s.front() != '(' || s.back() != ')')
+          throw InputError(file,
+                           parameter,
+                           "cannot read the point '" + text + "'",
+                           "(x, y) in 2D, (x, y, z) in 3D");
+        const auto            parts = split(s.substr(1, s.size() - 2), ',');
+        std::array<double, 3> p{{0., 0., 0.}};
+        if (static_cast<int>(parts.size()) != dim)
+          throw InputError(file,
+                           parameter,
+                           "the point '" + text + "' does not have " +
+                             std::to_string(dim) + " coordinates",
+                           "(x, y) in 2D, (x, y, z) in 3D");
+        for (int d = 0; d < dim; ++d)
+          try
+            {
+              std::size_t used = 0;
+              p[d]             = std::stod(parts[d], &used);
+              if (used != parts[d].size())
+                throw std::invalid_argument("trailing");
+            }
+          catch (...)
+            {
+              throw InputError(file,
+                               parameter,
+                               "'" + parts[d] + "' is not a number",
+                               "(x, y) in 2D, (x, y, z) in 3D");
+            }
+        return p;
+      }
+
+      /// Turn a deal.II parameter-parsing exception into one clear line.
+      std::string
+      clean_dealii_message(const std::string &what)
+      {
+        const std::string key = "Additional information:";
+        auto              pos = what.find(key);
+        std::string       msg = pos == std::string::npos ?
+                                  what :
+                                  what.substr(pos + key.size());
+        msg = std::regex_replace(msg, std::regex("-{5,}"), "");
+        msg = std::regex_replace(msg, std::regex("\\s+"), " ");
+        return trim(msg);
+      }
+    } // namespace
+
+    // ------------------------------------------------------------------ Mesh
+    void
+    Mesh::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mesh");
+      prm.declare_entry("Input file",
+                        "",
+                        Anything(),
+                        "A gmsh mesh (.msh, format 2.2 or 4.1) or a gmsh "
+                        "script (.geo, meshed by the gmsh executable at run "
+                        "time). Relative to the parameter file's folder. "
+                        "Physical surfaces (2D) or volumes (3D) name the "
+                        "regions; physical curves (2D) or surfaces (3D) name "
+                        "the boundaries.");
+      prm.declare_entry("Global refinements",
+                        "0",
+                        Integer(0, 10),
+                        "Number of global refinements after reading.");
+      prm.declare_entry("Mesh size factor",
+                        "1",
+                        Double(),
+                        "For a .geo input: every element size is multiplied "
+                        "by this factor (gmsh -clscale), so 0.5 halves the "
+                        "element size. Unlike global refinement, gmsh then "
+                        "follows curved boundaries. > 0.");
+      prm.declare_entry("PD regions",
+                        "pd",
+                        Anything(),
+                        "Comma-separated physical names of the cells "
+                        "discretised by peridynamics; 'all' (every cell) or "
+                        "'none' (pure finite elements).");
+      prm.leave_subsection();
+    }
+
+    void
+    Mesh::parse(ParameterHandler &prm, const std::string &file)
+    {
+      prm.enter_subsection("Mesh");
+      input_file  = trim(prm.get("Input file"));
+      refinements = prm.get_integer("Global refinements");
+      size_factor = prm.get_double("Mesh size factor");
+      pd_regions  = split(prm.get("PD regions"), ',');
+      prm.leave_subsection();
+      if (!(size_factor > 0.))
+        throw InputError(file,
+                         "Mesh/Mesh size factor",
+                         number(size_factor) + " is not positive",
+                         "a factor > 0");
+      if (input_file.empty())
+        throw InputError(file,
+                         "Mesh/Input file",
+                         "no mesh file given",
+                         "a .msh or .geo file");
+    }
+
+    // -------------------------------------------------------------- Material
+    void
+    Material::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      prm.declare_entry("Young's modulus", "0", Double(), "E [Pa], > 0.");
+      prm.declare_entry("Poisson's ratio",
+                        "0",
+                        Double(),
+                        "nu [-]: -1 < nu < 0.5 (3D and plane strain), "
+                        "-1 < nu <= 0.5 (plane stress).");
+      prm.declare_entry("Density",
+                        "0",
+                        Double(),
+                        "rho [kg/m^3], >= 0 (> 0 for dynamic runs).");
+      prm.declare_entry("Plane model",
+                        "plane stress",
+                        Selection("plane stress|plane strain"),
+                        "2D only: plane stress or plane strain.");
+      prm.declare_entry("Thickness",
+                        "1",
+                        Double(),
+                        "2D only: thickness [m] (> 0); forces and reactions "
+                        "are for this thickness.");
+      prm.leave_subsection();
+    }
+
+    void
+    Material::parse(ParameterHandler &prm, const std::string &file, int dim)
+    {
+      prm.enter_subsection("Material");
+      youngs_modulus = prm.get_double("Young's modulus");
+      poissons_ratio = prm.get_double("Poisson's ratio");
+      density        = prm.get_double("Density");
+      plane          = prm.get("Plane model") == "plane strain" ?
+                         PlaneModel::plane_strain :
+                         PlaneModel::plane_stress;
+      thickness      = prm.get_double("Thickness");
+      prm.leave_subsection();
+
+      if (!(youngs_modulus > 0.))
+        throw InputError(file,
+                         "Material/Young's modulus",
+                         "E = " + number(youngs_modulus) +
+                           " is not positive",
+                         "E > 0");
+      const bool plane_stress = dim == 2 && plane == PlaneModel::plane_stress;
+      const bool nu_ok        = poissons_ratio > -1. &&
+                         (plane_stress ? poissons_ratio <= 0.5 :
+                                         poissons_ratio < 0.5);
+      if (!nu_ok)
+        throw InputError(file,
+                         "Material/Poisson's ratio",
+                         "nu = " + number(poissons_ratio) +
+                           " is out of range for " +
+                           (dim == 3 ? std::string("3D") :
+                                       plane_stress ? "plane stress" :
+                                                      "plane strain"),
+                         plane_stress ? "-1 < nu <= 0.5" : "-1 < nu < 0.5");
+      if (density < 0.)
+        throw InputError(file,
+                         "Material/Density",
+                         "rho = " + number(density) + " is negative",
+                         "rho >= 0");
+      if (!(thickness > 0.))
+        throw InputError(file,
+                         "Material/Thickness",
+                         "thickness = " + number(thickness) +
+                           " is not positive",
+                         "thickness > 0");
+    }
+
+    // ---------------------------------------------------------- Peridynamics
+    void
+    Peridynamics::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Peridynamics");
+      prm.declare_entry("Model",
+                        "pdlsm",
+                        Selection("pdlsm"),
+                        "PD model of the PD cells: 'pdlsm' (peridynamic "
+                        "least squares minimisation, second-order Taylor "
+                        "basis; Madenci et al. 2019, Liu & Xin 2021).");
+      prm.declare_entry("Horizon factor",
+                        "3",
+                        Double(),
+                        "m in delta_i = m * Delta_i, Delta_i = V_i^(1/dim) "
+                        "(V_i: nodal volume); m >= 1.");
+      prm.declare_entry("Weight factor",
+                        "0.33",
+                        Double(),
+                        "a in the weight omega = exp(-(|xi|/(a delta))^2); "
+                        "a > 0 (typical: 1/3 for quads, 1/4 for triangles).");
+      prm.declare_entry("Family members",
+                        "all nodes",
+                        Selection("all nodes|pd nodes"),
+                        "Which nodes may belong to a PD family: every mesh "
+                        "node within the horizon, or PD nodes only.");
+      prm.declare_entry("Pre-existing cracks",
+                        "",
+                        Anything(),
+                        "Cracks present at the start; bonds crossing them are "
+                        "cut. 2D: segments '(x1, y1) -- (x2, y2)'; 3D: "
+                        "triangles '(x,y,z) -- (x,y,z) -- (x,y,z)'. Several "
+                        "separated by ';'.");
+      prm.leave_subsection();
+    }
+
+    void
+    Peridynamics::parse(ParameterHandler  &prm,
+                        const std::string &file,
+                        int                dim)
+    {
+      prm.enter_subsection("Peridynamics");
+      model                = prm.get("Model");
+      horizon_factor       = prm.get_double("Horizon factor");
+      weight_factor        = prm.get_double("Weight factor");
+      fe_nodes_in_families = prm.get("Family members") == "all nodes";
+      const std::string crack_text = prm.get("Pre-existing cracks");
+      prm.leave_subsection();
+
+      if (!(horizon_factor >= 1.))
+        throw InputError(file,
+                         "Peridynamics/Horizon factor",
+                         "m = " + number(horizon_factor) +
+                           " is smaller than 1 (the horizon would be smaller "
+                           "than the node spacing)",
+                         "m >= 1");
+      if (!(weight_factor > 0.))
+        throw InputError(file,
+                         "Peridynamics/Weight factor",
+                         "a = " + number(weight_factor) +
+                           " is not positive",
+                         "a > 0");
+      cracks.clear();
+      const std::string parameter = "Peridynamics/Pre-existing cracks";
+      for (const std::string &crack : split(crack_text, ';'))
+        {
+          std::vector<std::array<double, 3>> points;
+          std::string                        rest = crack;
+          std::size_t                        pos;
+          while ((pos = rest.find("--")) != std::string::npos)
+            {
+              points.push_back(
+                parse_point(rest.substr(0, pos), file, parameter, dim));
+              rest = rest.substr(pos + 2);
+            }
+          points.push_back(parse_point(rest, file, parameter, dim));
+          if (static_cast<int>(points.size()) != dim)
+            throw InputError(file,
+                             parameter,
+                             "'" + crack + "' has " +
+                               std::to_string(points.size()) + " points",
+                             dim == 2 ? "2 points per crack in 2D" :
+                                        "3 points per crack in 3D");
+          cracks.push_back(points);
+        }
+    }
+
+    // --------------------------------------------------- Boundary conditions
+    void
+    BoundaryConditions::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      prm.declare_entry("Dirichlet",
+                        "",
+                        Anything(),
+                        "Prescribed displacements: 'boundary: component = "
+                        "expression; ...', component x, y or z, expression "
+                        "a function of x, y, z and t (t = load factor in "
+                        "static runs). Example: 'left: x = 0; right: x = "
+                        "1e-4*x'. Where two entries fix the same DoF, the "
+                        "first one counts.");
+      prm.declare_entry("Traction",
+                        "",
+                        Anything(),
+                        "Applied tractions [Pa]: 'boundary: component = "
+                        "expression; ...', component x, y, z or normal "
+                        "(positive along the outward normal = tension).");
+      prm.declare_entry("Body force",
+                        "",
+                        Anything(),
+                        "Body force per unit volume [N/m^3]: dim expressions "
+                        "of x, y, z, t separated by ';' (empty: none).");
+      prm.leave_subsection();
+    }
+
+    void
+    BoundaryConditions::parse(ParameterHandler  &prm,
+                              const std::string &file,
+                              int                dim)
+    {
+      prm.enter_subsection("Boundary conditions");
+      dirichlet = parse_boundary_entries(
+        prm.get("Dirichlet"), file, "Boundary conditions/Dirichlet", dim, false);
+      traction = parse_boundary_entries(
+        prm.get("Traction"), file, "Boundary conditions/Traction", dim, true);
+      body_force = split(prm.get("Body force"), ';');
+      prm.leave_subsection();
+      if (!body_force.empty() && static_cast<int>(body_force.size()) != dim)
+        throw InputError(file,
+                         "Boundary conditions/Body force",
+                         "needs " + std::to_string(dim) + " expressions, got " +
+                           std::to_string(body_force.size()),
+                         "empty, or dim expressions separated by ';'");
+      for (const auto &e : body_force)
+        check_expression(e, file, "Boundary conditions/Body force");
+    }
+
+    // --------------------------------------------------------- Linear solver
+    void
+    LinearSolver::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      prm.declare_entry("Type",
+                        "direct",
+                        Selection("direct|gmres"),
+                        "direct (sparse LU) or gmres (preconditioned, "
+                        "restarted GMRES). The coupled matrix is not "
+                        "symmetric, so CG is not offered.");
+      prm.declare_entry("Direct solver",
+                        "mumps",
+                        Selection("mumps|klu"),
+                        "Amesos package for 'direct': mumps (parallel) or "
+                        "klu (serial, gathers on rank 0).");
+      prm.declare_entry("Preconditioner",
+                        "amg",
+                        Selection("amg|ilu"),
+                        "For gmres: amg (Trilinos ML) or ilu (Ifpack ILU(1)).");
+      prm.declare_entry("Tolerance",
+                        "1e-10",
+                        Double(0.),
+                        "gmres: relative residual reduction.");
+      prm.declare_entry("Max iterations",
+                        "2000",
+                        Integer(1),
+                        "gmres: iteration limit.");
+      prm.leave_subsection();
+    }
+
+    void
+    LinearSolver::parse(ParameterHandler &prm, const std::string &)
+    {
+      prm.enter_subsection("Linear solver");
+      type           = prm.get("Type");
+      direct_solver  = prm.get("Direct solver");
+      preconditioner = prm.get("Preconditioner");
+      tolerance      = prm.get_double("Tolerance");
+      max_iterations = prm.get_integer("Max iterations");
+      prm.leave_subsection();
+    }
+
+    // ---------------------------------------------------------------- Driver
+    void
+    Driver::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Driver");
+      prm.declare_entry("Type",
+                        "static",
+                        Selection("static"),
+                        "static: equilibrium under the full load, reached in "
+                        "'Load steps' equal increments of the load factor t.");
+      prm.declare_entry("Load steps",
+                        "1",
+                        Integer(1),
+                        "Number of load increments (t = k / Load steps).");
+      prm.declare_entry("Residual tolerance",
+                        "1e-9",
+                        Double(0.),
+                        "Equilibrium iterations stop when |r| <= tol * "
+                        "max(|f_ext|, |r_0|).");
+      prm.declare_entry("Max iterations",
+                        "10",
+                        Integer(1),
+                        "Equilibrium iterations per load step before the run "
+                        "stops with exit state 'diverged'.");
+      prm.leave_subsection();
+    }
+
+    void
+    Driver::parse(ParameterHandler &prm, const std::string &)
+    {
+      prm.enter_subsection("Driver");
+      type               = prm.get("Type");
+      load_steps         = prm.get_integer("Load steps");
+      residual_tolerance = prm.get_double("Residual tolerance");
+      max_iterations     = prm.get_integer("Max iterations");
+      prm.leave_subsection();
+    }
+
+    // ---------------------------------------------------------------- Output
+    void
+    Output::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry("Directory",
+                        "",
+                        Anything(),
+                        "Output folder (created if missing). Empty: "
+                        "'output-<scene name>' in the working directory. "
+                        "The command-line option --output overrides it.");
+      prm.declare_entry("Write vtu",
+                        "true",
+                        Bool(),
+                        "Write solution-NNNNN.vtu/.pvtu and solution.pvd.");
+      prm.declare_entry("Write nodes csv",
+                        "false",
+                        Bool(),
+                        "Write nodes.csv: every node's coordinates, "
+                        "displacement and stress, sorted by coordinates "
+                        "(independent of the number of ranks).");
+      prm.declare_entry("Print timings",
+                        "false",
+                        Bool(),
+                        "Print a table of wall times per phase at the end.");
+      prm.leave_subsection();
+    }
+
+    void
+    Output::parse(ParameterHandler &prm, const std::string &)
+    {
+      prm.enter_subsection("Output");
+      directory       = trim(prm.get("Directory"));
+      write_vtu       = prm.get_bool("Write vtu");
+      write_nodes_csv = prm.get_bool("Write nodes csv");
+      print_timings   = prm.get_bool("Print timings");
+      prm.leave_subsection();
+    }
+
+    // ----------------------------------------------------------------- Scene
+    void
+    Scene::declare(ParameterHandler &prm)
+    {
+      prm.declare_entry("Dimension",
+                        "2",
+                        Integer(2, 3),
+                        "Space dimension of the scene: 2 or 3.");
+      Mesh::declare(prm);
+      Material::declare(prm);
+      Peridynamics::declare(prm);
+      BoundaryConditions::declare(prm);
+      LinearSolver::declare(prm);
+      Driver::declare(prm);
+      Output::declare(prm);
+    }
+
+    void
+    Scene::read(
+      const std::string                                       &parameter_file,
+      const std::vector<std::pair<std::string, std::string>> &overrides)
+    {
+      namespace fs = std::filesystem;
+      file         = parameter_file;
+      if (!fs::exists(file))
+        throw InputError(file, "", "the parameter file does not exist");
+      base_dir = fs::absolute(fs::path(file)).parent_path().string();
+      name     = fs::path(file).stem().string();
+
+      ParameterHandler prm;
+      declare(prm);
+      try
+        {
+          prm.parse_input(file, "", false, true);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          throw InputError(file,
+                           "",
+                           clean_dealii_message(e.what()),
+                           "see 'pdfem --print-parameters'");
+        }
+      for (const auto &[path, value] : overrides)
+        {
+          const auto   parts = split(path, '/');
+          unsigned int depth = 0;
+          try
+            {
+              for (; depth + 1 < parts.size(); ++depth)
+                prm.enter_subsection(parts[depth]);
+              prm.set(parts.back(), value);
+            }
+          catch (const dealii::ExceptionBase &e)
+            {
+              throw InputError("--set",
+                               path,
+                               "cannot set it to '" + value +
+                                 "': " + clean_dealii_message(e.what()),
+                               "see 'pdfem --print-parameters'");
+            }
+          for (; depth > 0; --depth)
+            prm.leave_subsection();
+        }
+      dim = prm.get_integer("Dimension");
+      mesh.parse(prm, file);
+      material.parse(prm, file, dim);
+      peridynamics.parse(prm, file, dim);
+      boundary_conditions.parse(prm, file, dim);
+      linear_solver.parse(prm, file);
+      driver.parse(prm, file);
+      output.parse(prm, file);
+    }
+
+    int
+    read_dimension(const std::string &file)
+    {
+      std::ifstream in(file);
+      if (!in)
+        throw InputError(file, "", "cannot open the parameter file");
+      const std::regex pattern(R"(^\s*set\s+Dimension\s*=\s*(\S+))");
+      std::string      line;
+      while (std::getline(in, line))
+        {
+          std::smatch m;
+          if (std::regex_search(line, m, pattern))
+            {
+              const std::string value = m[1];
+              if (value == "2" || value == "3")
+                return std::stoi(value);
+              throw InputError(file,
+                               "Dimension",
+                               "'" + value + "' is not a dimension",
+                               "2 or 3");
+            }
+        }
+      return 2;
+    }
+
+    void
+    print_all(std::ostream &out)
+    {
+      ParameterHandler prm;
+      Scene::declare(prm);
+      prm.print_parameters(out, ParameterHandler::PRM);
+    }
+  } // namespace Parameters
+} // namespace pdfem

@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <pdfem/base/config.h>
+#include <pdfem/pd_models/pdlsm.h>
+
+#include <array>
+#include <cmath>
+
+namespace pdfem
+{
+  namespace PDModels
+  {
+    using dealii::SymmetricTensor;
+    using dealii::Tensor;
+
+    namespace
+    {
+      /// Taylor basis p(s) in the order documented in PDLSM.
+      template <int dim, std::size_t n>
+      void
+      basis(const Tensor<1, dim> &s, std::array<double, n> &p)
+      {
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            p[i]       = s[i];
+            p[dim + i] = 0.5 * s[i] * s[i];
+          }
+        if constexpr (dim == 2)
+          p[4] = s[0] * s[1];
+        else
+          {
+            p[6] = s[0] * s[1];
+            p[7] = s[1] * s[2];
+            p[8] = s[2] * s[0];
+          }
+      }
+
+      /**
+       * Thin Householder QR of the column-major m x n matrix @p A (m >= n):
+       * on return A holds the thin Q (m x n, column-major) and @p R the upper
+       * triangle. Returns false if a diagonal entry of R is below
+       * @p relative_tolerance times the largest column norm of A, i.e. the
+       * columns are (numerically) dependent.
+       */
+      template <std::size_t n>
+      bool
+      thin_qr(std::vector<double>                  &A,
+              const std::size_t                     m,
+              std::array<std::array<double, n>, n> &R,
+              const double                          relative_tolerance)
+      {
+        auto   a          = [&](std::size_t i, std::size_t j) -> double & {
+          return A[j * m + i];
+        };
+        double max_column = 0.;
+        for (std::size_t j = 0; j < n; ++j)
+          {
+            double c = 0.;
+            for (std::size_t i = 0; i < m; ++i)
+              c += a(i, j) * a(i, j);
+            max_column = std::max(max_column, std::sqrt(c));
+          }
+        if (!(max_column > 0.))
+          return false;
+        std::vector<double> v(m * n, 0.); // Householder vectors
+        std::array<double, n> beta{};
+        for (std::size_t k = 0; k < n; ++k)
+          {
+            double norm = 0.;
+            for (std::size_t i = k; i < m; ++i)
+              norm += a(i, k) * a(i, k);
+            norm = std::sqrt(norm);
+            if (!(norm > relative_tolerance * max_column))
+              return false;
+            const double alpha = a(k, k) > 0. ? -norm : norm;
+            double       vnorm2 = 0.;
+            for (std::size_t i = k; i < m; ++i)
+              {
+                v[k * m + i] = a(i, k) - (i == k ? alpha : 0.);
+                vnorm2 += v[k * m + i] * v[k * m + i];
+              }
+            beta[k] = vnorm2 > 0. ? 2. / vnorm2 : 0.;
+            for (std::size_t j = k; j < n; ++j)
+              {
+                double dot = 0.;
+                for (std::size_t i = k; i < m; ++i)
+                  dot += v[k * m + i] * a(i, j);
+                dot *= beta[k];
+                for (std::size_t i = k; i < m; ++i)
+                  a(i, j) -= dot * v[k * m + i];
+              }
+          }
+        for (std::size_t i = 0; i < n; ++i)
+          for (std::size_t j = 0; j < n; ++j)
+            R[i][j] = j >= i ? a(i, j) : 0.;
+        // Thin Q = H_0 ... H_{n-1} [I; 0].
+        std::fill(A.begin(), A.end(), 0.);
+        for (std::size_t j = 0; j < n; ++j)
+          a(j, j) = 1.;
+        for (std::size_t k = n; k-- > 0;)
+          for (std::size_t j = 0; j < n; ++j)
+            {
+              double dot = 0.;
+              for (std::size_t i = k; i < m; ++i)
+                dot += v[k * m + i] * a(i, j);
+              dot *= beta[k];
+              for (std::size_t i = k; i < m; ++i)
+                a(i, j) -= dot * v[k * m + i];
+            }
+        return true;
+      }
+    } // namespace
+
+    template <int dim>
+    PDLSM<dim>::PDLSM(const double lambda,
+                      const double mu,
+                      const double weight_factor)
+      : lambda(lambda)
+      , mu(mu)
+      , weight_factor(weight_factor)
+    {}
+
+    template <int dim>
+    bool
+    PDLSM<dim>::compute_weights(const std::vector<Tensor<1, dim>> &xi,
+                                const std::vector<double>         &volume,
+                                const double                       delta,
+                                std::vector<Tensor<1, dim>>       &a,
+                                std::vector<SymmetricTensor<2, dim>> &b) const
+    {
+      constexpr std::size_t n = n_coefficients;
+      const std::size_t     n_bonds = xi.size();
+      a.resize(n_bonds);
+      b.resize(n_bonds);
+      if (n_bonds < n)
+        return false;
+
+      // Weighted least squares in s = xi / delta (entries O(1)):
+      // minimise sum_m w_m (p(s_m) . D - df_m)^2, w_m = omega_m V_m.
+      // With W^1/2 P = Q R (thin Householder QR) the fit is
+      // D = R^-1 Q^T W^1/2 df, so the weight of bond m is
+      // c_m = sqrt(w_m) R^-1 q_m (q_m: row m of Q). QR instead of the normal
+      // equations keeps the error at cond(R) eps rather than cond(R)^2 eps,
+      // which matters for one-sided families at corners, where the Gaussian
+      // weights span many orders of magnitude.
+      const double        inv_delta = 1. / delta;
+      const double        inv_a2    = 1. / (weight_factor * weight_factor);
+      std::vector<double> A(n_bonds * n), sqrt_w(n_bonds);
+      std::array<double, n> p;
+      for (std::size_t m = 0; m < n_bonds; ++m)
+        {
+          const Tensor<1, dim> s = xi[m] * inv_delta;
+          basis<dim, n>(s, p);
+          sqrt_w[m] = std::sqrt(std::exp(-(s * s) * inv_a2) * volume[m]);
+          for (std::size_t j = 0; j < n; ++j)
+            A[j * n_bonds + m] = sqrt_w[m] * p[j];
+        }
+      std::array<std::array<double, n>, n> R;
+      if (!thin_qr<n>(A, n_bonds, R, 1e-12))
+        return false;
+
+      const double inv_delta2 = inv_delta * inv_delta;
+      for (std::size_t m = 0; m < n_bonds; ++m)
+        {
+          std::array<double, n> c;
+          for (std::size_t j = 0; j < n; ++j)
+            c[j] = A[j * n_bonds + m];
+          for (std::size_t i = n; i-- > 0;)
+            {
+              for (std::size_t k = i + 1; k < n; ++k)
+                c[i] -= R[i][k] * c[k];
+              c[i] /= R[i][i];
+            }
+          for (std::size_t j = 0; j < n; ++j)
+            c[j] *= sqrt_w[m];
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              a[m][i]    = c[i] * inv_delta;
+              b[m][i][i] = c[dim + i] * inv_delta2;
+            }
+          if constexpr (dim == 2)
+            b[m][0][1] = c[4] * inv_delta2;
+          else
+            {
+              b[m][0][1] = c[6] * inv_delta2;
+              b[m][1][2] = c[7] * inv_delta2;
+              b[m][2][0] = c[8] * inv_delta2;
+            }
+        }
+      return true;
+    }
+
+    template <int dim>
+    Tensor<2, dim>
+    PDLSM<dim>::divergence_block(const SymmetricTensor<2, dim> &b) const
+    {
+      Tensor<2, dim> G;
+      const double   laplace = mu * dealii::trace(b);
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          for (unsigned int j = 0; j < dim; ++j)
+            G[i][j] = (lambda + mu) * b[i][j];
+          G[i][i] += laplace;
+        }
+      return G;
+    }
+
+    template <int dim>
+    Tensor<2, dim>
+    PDLSM<dim>::traction_block(const Tensor<1, dim> &s,
+                               const Tensor<1, dim> &a) const
+    {
+      Tensor<2, dim> T;
+      const double   sa = s * a;
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          for (unsigned int j = 0; j < dim; ++j)
+            T[i][j] = lambda * s[i] * a[j] + mu * s[j] * a[i];
+          T[i][i] += mu * sa;
+        }
+      return T;
+    }
+
+    template <int dim>
+    SymmetricTensor<2, dim>
+    PDLSM<dim>::stress(const Tensor<2, dim> &grad_u) const
+    {
+      const SymmetricTensor<2, dim> eps = dealii::symmetrize(grad_u);
+      return lambda * dealii::trace(eps) *
+               dealii::unit_symmetric_tensor<dim>() +
+             2. * mu * eps;
+    }
+
+#define INSTANTIATE(dim) template class PDLSM<dim>;
+    PDFEM_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace PDModels
+} // namespace pdfem

@@ -1,0 +1,544 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <pdfem/base/config.h>
+#include <pdfem/base/exceptions.h>
+#include <pdfem/coupling/coupled_system.h>
+#include <pdfem/drivers/static_driver.h>
+#include <pdfem/io/field_output.h>
+#include <pdfem/io/history.h>
+#include <pdfem/io/json_writer.h>
+#include <pdfem/io/parameters.h>
+#include <pdfem/mesh/cracks.h>
+#include <pdfem/mesh/gmsh_input.h>
+#include <pdfem/scene/scene.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <set>
+
+namespace pdfem
+{
+  namespace Scene
+  {
+    using namespace dealii;
+    namespace fs = std::filesystem;
+
+    namespace
+    {
+      using clock = std::chrono::steady_clock;
+
+      double
+      seconds_since(const clock::time_point &start)
+      {
+        return std::chrono::duration<double>(clock::now() - start).count();
+      }
+
+      std::string
+      resolve(const std::string &path, const std::string &base)
+      {
+        const fs::path p(path);
+        return p.is_absolute() ? path : (fs::path(base) / p).string();
+      }
+
+      /// A region or boundary given by name, or by a number (its tag).
+      bool
+      lookup(const std::map<std::string, unsigned int> &names,
+             const std::string                         &name,
+             unsigned int                              &tag)
+      {
+        const auto it = names.find(name);
+        if (it != names.end())
+          {
+            tag = it->second;
+            return true;
+          }
+        if (!name.empty() &&
+            std::all_of(name.begin(), name.end(), [](char c) {
+              return std::isdigit(static_cast<unsigned char>(c));
+            }))
+          {
+            tag = std::stoul(name);
+            return true;
+          }
+        return false;
+      }
+
+      template <int dim>
+      std::vector<Coupling::BoundaryCondition<dim>>
+      resolve_conditions(const std::vector<Parameters::BoundaryEntry> &entries,
+                         const Mesh::PhysicalNames                   &names,
+                         const std::set<unsigned int> &boundary_ids_in_mesh,
+                         const std::string            &file,
+                         const std::string            &parameter,
+                         const bool                    allow_points)
+      {
+        std::vector<Coupling::BoundaryCondition<dim>> result;
+        for (const auto &e : entries)
+          {
+            Coupling::BoundaryCondition<dim> bc;
+            bc.name       = e.boundary;
+            bc.component  = e.component;
+            bc.expression = e.expression;
+            if (!e.boundary.empty() && e.boundary.front() == '(')
+              {
+                if (!allow_points)
+                  throw InputError(file,
+                                   parameter,
+                                   "a point '" + e.boundary +
+                                     "' cannot carry a traction",
+                                   "the name of a boundary");
+                std::string inner = e.boundary.substr(1);
+                inner             = inner.substr(0, inner.find(')'));
+                std::stringstream s(inner);
+                std::string       part;
+                unsigned int      d = 0;
+                while (std::getline(s, part, ','))
+                  {
+                    if (d >= dim)
+                      break;
+                    try
+                      {
+                        bc.point[d++] = std::stod(part);
+                      }
+                    catch (...)
+                      {
+                        d = dim + 1;
+                        break;
+                      }
+                  }
+                if (d != dim)
+                  throw InputError(file,
+                                   parameter,
+                                   "cannot read the point '" + e.boundary + "'",
+                                   dim == 2 ? "(x, y)" : "(x, y, z)");
+                bc.at_point = true;
+              }
+            else
+              {
+                unsigned int tag = 0;
+                if (!lookup(names.boundaries, e.boundary, tag) ||
+                    boundary_ids_in_mesh.count(tag) == 0)
+                  throw InputError(
+                    file,
+                    parameter,
+                    "the mesh has no boundary named '" + e.boundary + "'",
+                    "boundaries of the mesh: " +
+                      Mesh::PhysicalNames::list(names.boundaries) +
+                      (allow_points ? ", or a node given as (x, y[, z])" :
+                                      ""));
+                bc.boundary_ids = {tag};
+              }
+            result.push_back(bc);
+          }
+        return result;
+      }
+
+      template <int dim>
+      std::vector<std::string>
+      component_names()
+      {
+        return dim == 2 ? std::vector<std::string>{"x", "y"} :
+                          std::vector<std::string>{"x", "y", "z"};
+      }
+
+      template <int dim>
+      std::vector<std::string>
+      stress_component_names()
+      {
+        return dim == 2 ? std::vector<std::string>{"xx", "yy", "xy"} :
+                          std::vector<std::string>{"xx", "yy", "zz", "xy", "yz", "xz"};
+      }
+
+      template <int dim>
+      double
+      stress_component(const SymmetricTensor<2, dim> &s, const unsigned int c)
+      {
+        static const unsigned int i2[3] = {0, 1, 0}, j2[3] = {0, 1, 1};
+        static const unsigned int i3[6] = {0, 1, 2, 0, 1, 0},
+                                  j3[6] = {0, 1, 2, 1, 2, 2};
+        return dim == 2 ? s[i2[c]][j2[c]] : s[i3[c]][j3[c]];
+      }
+
+      template <int dim>
+      int
+      run_scene(const Parameters::Scene &prm,
+                const RunOptions        &options,
+                MPI_Comm                 comm)
+      {
+        const auto   total_start = clock::now();
+        const bool   root        = Utilities::MPI::this_mpi_process(comm) == 0;
+        std::ostream *progress   = (root && !options.quiet) ? &std::cout : nullptr;
+        std::map<std::string, double> timings;
+
+        // ---- output folder
+        std::string out_dir = options.output_directory;
+        if (out_dir.empty())
+          out_dir = prm.output.directory.empty() ?
+                      "output-" + prm.name :
+                      resolve(prm.output.directory, prm.base_dir);
+        if (root)
+          {
+            std::error_code ec;
+            fs::create_directories(out_dir, ec);
+            if (ec || !fs::is_directory(out_dir))
+              throw InputError(prm.file,
+                               "Output/Directory",
+                               "cannot create the output folder '" + out_dir +
+                                 "': " + ec.message(),
+                               "a writable folder");
+          }
+        MPI_Barrier(comm);
+
+        // ---- mesh (gmsh runs on rank 0 only)
+        auto              start = clock::now();
+        const std::string input =
+          resolve(prm.mesh.input_file, prm.base_dir);
+        std::string msh;
+        std::string mesh_error;
+        if (root)
+          try
+            {
+              msh = Mesh::prepare_msh_file(
+                input,
+                dim,
+                prm.mesh.size_factor,
+                out_dir,
+                prm.file,
+                "Mesh/Input file");
+            }
+          catch (const InputError &e)
+            {
+              mesh_error = e.what();
+            }
+        mesh_error = Utilities::MPI::broadcast(comm, mesh_error, 0);
+        if (!mesh_error.empty())
+          throw InputError("", "", mesh_error);
+        msh = Utilities::MPI::broadcast(comm, msh, 0);
+
+        const Mesh::PhysicalNames names = Mesh::read_physical_names(msh, dim);
+        parallel::shared::Triangulation<dim> tria(
+          comm,
+          Triangulation<dim>::none,
+          false,
+          parallel::shared::Triangulation<dim>::partition_metis);
+        try
+          {
+            Mesh::read_msh<dim>(msh, tria);
+          }
+        catch (const std::exception &e)
+          {
+            throw InputError(prm.file,
+                             "Mesh/Input file",
+                             "cannot read the mesh '" + msh + "'",
+                             "a gmsh mesh of dimension " + std::to_string(dim));
+          }
+        if (prm.mesh.refinements > 0)
+          tria.refine_global(prm.mesh.refinements);
+
+        // ---- regions
+        std::set<unsigned int> material_ids, boundary_ids;
+        for (const auto &cell : tria.active_cell_iterators())
+          {
+            material_ids.insert(cell->material_id());
+            for (const unsigned int f : cell->face_indices())
+              if (cell->at_boundary(f))
+                boundary_ids.insert(cell->face(f)->boundary_id());
+          }
+        std::vector<bool> cell_is_pd(tria.n_active_cells(), false);
+        const auto       &regions = prm.mesh.pd_regions;
+        const bool        all_pd =
+          std::find(regions.begin(), regions.end(), "all") != regions.end();
+        const bool no_pd = regions.empty() ||
+                           std::find(regions.begin(), regions.end(), "none") !=
+                             regions.end();
+        std::set<unsigned int> pd_ids;
+        if (!all_pd && !no_pd)
+          for (const auto &r : regions)
+            {
+              unsigned int tag = 0;
+              if (!lookup(names.regions, r, tag) || !material_ids.count(tag))
+                throw InputError(prm.file,
+                                 "Mesh/PD regions",
+                                 "the mesh has no region named '" + r + "'",
+                                 "regions of the mesh: " +
+                                   Mesh::PhysicalNames::list(names.regions) +
+                                   ", 'all' or 'none'");
+              pd_ids.insert(tag);
+            }
+        unsigned int n_pd_cells = 0;
+        for (const auto &cell : tria.active_cell_iterators())
+          {
+            const bool pd = !no_pd && (all_pd || pd_ids.count(cell->material_id()));
+            cell_is_pd[cell->active_cell_index()] = pd;
+            n_pd_cells += pd;
+          }
+        if (!no_pd && n_pd_cells == 0)
+          throw InputError(prm.file,
+                           "Mesh/PD regions",
+                           "the PD region is empty (no cell of the mesh "
+                           "belongs to it)",
+                           "regions with cells, or 'none' for pure FE");
+
+        // ---- boundary conditions against the mesh
+        Coupling::Settings<dim> settings;
+        settings.source_file                 = prm.file;
+        settings.material.youngs_modulus     = prm.material.youngs_modulus;
+        settings.material.poissons_ratio     = prm.material.poissons_ratio;
+        settings.material.density            = prm.material.density;
+        settings.material.plane_stress =
+          dim == 2 && prm.material.plane == Parameters::PlaneModel::plane_stress;
+        settings.material.thickness = prm.material.thickness;
+        settings.horizon_factor     = prm.peridynamics.horizon_factor;
+        settings.weight_factor      = prm.peridynamics.weight_factor;
+        settings.fe_nodes_in_families =
+          prm.peridynamics.fe_nodes_in_families;
+        settings.cracks = Mesh::make_cracks<dim>(prm.peridynamics.cracks);
+        settings.dirichlet = resolve_conditions<dim>(
+          prm.boundary_conditions.dirichlet,
+          names,
+          boundary_ids,
+          prm.file,
+          "Boundary conditions/Dirichlet",
+          true);
+        settings.traction = resolve_conditions<dim>(
+          prm.boundary_conditions.traction,
+          names,
+          boundary_ids,
+          prm.file,
+          "Boundary conditions/Traction",
+          false);
+        settings.body_force    = prm.boundary_conditions.body_force;
+        settings.linear_solver = prm.linear_solver;
+
+        Coupling::CoupledSystem<dim> system(tria, cell_is_pd, settings);
+        const Coupling::ProblemSize  size = system.size();
+        timings["setup"]                  = seconds_since(start);
+        if (progress)
+          *progress << "pdfem " << PDFEM_VERSION << ": " << prm.file << "\n"
+                    << "  " << dim << "D, " << size.n_cells << " cells ("
+                    << size.n_pd_cells << " PD), " << size.n_nodes
+                    << " nodes (" << size.n_pd_nodes << " PD, "
+                    << size.n_interface_nodes << " interface), "
+                    << size.n_dofs << " DoFs, " << size.n_bonds
+                    << " bonds, " << Utilities::MPI::n_mpi_processes(comm)
+                    << " rank(s)" << std::endl;
+
+        // ---- history
+        const auto reaction_sets = system.reaction_names();
+        std::vector<std::string> columns = {"step",
+                                            "time",
+                                            "load_factor",
+                                            "newton_iterations",
+                                            "linear_iterations",
+                                            "residual",
+                                            "n_broken_bonds",
+                                            "max_damage"};
+        for (const auto &set : reaction_sets)
+          for (const auto &c : component_names<dim>())
+            columns.push_back("reaction_" + IO::History::column_name(set) +
+                              "_" + c);
+        columns.push_back("wall_seconds");
+        IO::History history(out_dir + "/history.csv", columns, root);
+
+        // ---- solve
+        TrilinosWrappers::MPI::Vector u;
+        system.initialize_vector(u);
+        Drivers::StaticDriver driver(prm.driver);
+        std::string           exit_state = "completed", message;
+        unsigned int          n_steps    = 0;
+        double                output_time = 0.;
+        IO::FieldOutput<dim>  field_output(out_dir,
+                                          dim == 2 && !settings.material.plane_stress,
+                                          prm.material.poissons_ratio);
+        auto on_step = [&](const Drivers::StepRecord &record) {
+          n_steps = record.step;
+          const Coupling::ProblemSize s = system.size();
+          std::vector<double> row = {double(record.step),
+                                     record.time,
+                                     record.load_factor,
+                                     double(record.newton_iterations),
+                                     double(record.linear_iterations),
+                                     record.relative_residual,
+                                     double(s.n_broken_bonds),
+                                     0.};
+          for (const auto &R : system.reactions())
+            for (unsigned int c = 0; c < dim; ++c)
+              row.push_back(R[c]);
+          row.push_back(seconds_since(total_start));
+          history.add_row(row);
+        };
+        try
+          {
+            driver.run(system, u, on_step, progress);
+          }
+        catch (const RunFailure &e)
+          {
+            exit_state = e.exit_state;
+            message    = e.what();
+            if (root)
+              std::cerr << "pdfem: run stopped: " << message << std::endl;
+          }
+        timings["assembly"] = driver.timings().assembly;
+        timings["solve"]    = driver.timings().solve;
+
+        // ---- results
+        start = clock::now();
+        const Coupling::NodalResults<dim> results = system.nodal_results(u);
+        if (prm.output.write_vtu)
+          field_output.write(system, results, 1.);
+        if (prm.output.write_nodes_csv && root)
+          IO::FieldOutput<dim>::write_nodes_csv(out_dir + "/nodes.csv",
+                                                results);
+        const unsigned long n_broken_bonds = system.size().n_broken_bonds;
+        output_time       = seconds_since(start);
+        timings["output"] = output_time;
+        timings["total"]  = seconds_since(total_start);
+
+        if (root)
+          {
+            std::ofstream   out(out_dir + "/summary.json");
+            IO::JsonWriter  json(out);
+            json.begin_object();
+            json.value("pdfem_version", PDFEM_VERSION);
+            json.value("scene", prm.name);
+            json.value("input_file", prm.file);
+            json.value("dimension", static_cast<unsigned long>(dim));
+            json.value("ranks",
+                       static_cast<unsigned long>(
+                         Utilities::MPI::n_mpi_processes(comm)));
+            json.value("exit_state", exit_state);
+            json.value("message", message);
+            json.begin_object("problem");
+            json.value("nodes", size.n_nodes);
+            json.value("pd_nodes", size.n_pd_nodes);
+            json.value("interface_nodes", size.n_interface_nodes);
+            json.value("cells", size.n_cells);
+            json.value("pd_cells", size.n_pd_cells);
+            json.value("dofs", size.n_dofs);
+            json.value("bonds", size.n_bonds);
+            json.value("broken_bonds", n_broken_bonds);
+            json.value("decoupled_nodes", size.n_decoupled_nodes);
+            json.value("pd_boundary_faces", size.n_pd_boundary_faces);
+            json.value("matrix_entries_rank0", size.n_matrix_entries);
+            json.end_object();
+            json.value("steps", static_cast<unsigned long>(n_steps));
+
+            json.begin_object("final");
+            json.value("load_factor",
+                       n_steps > 0 ? double(n_steps) / prm.driver.load_steps :
+                                     0.);
+            const auto comps   = component_names<dim>();
+            const auto scomps  = stress_component_names<dim>();
+            const double inf   = std::numeric_limits<double>::infinity();
+            std::vector<double> umax(dim, -inf), umin(dim, inf),
+              smax(scomps.size(), -inf), smin(scomps.size(), inf);
+            double s1max = -inf, dmax = 0.;
+            for (unsigned int k = 0; k < results.position.size(); ++k)
+              {
+                for (unsigned int c = 0; c < dim; ++c)
+                  {
+                    umax[c] = std::max(umax[c], results.displacement[k][c]);
+                    umin[c] = std::min(umin[c], results.displacement[k][c]);
+                  }
+                for (unsigned int c = 0; c < scomps.size(); ++c)
+                  {
+                    const double v = stress_component(results.stress[k], c);
+                    smax[c]        = std::max(smax[c], v);
+                    smin[c]        = std::min(smin[c], v);
+                  }
+                s1max = std::max(s1max, eigenvalues(results.stress[k])[0]);
+                dmax  = std::max(dmax, results.damage[k]);
+              }
+            const std::pair<const char *, const std::vector<double> *> fields[] =
+              {{"max_displacement", &umax},
+               {"min_displacement", &umin}};
+            for (const auto &[name, values] : fields)
+              {
+                json.begin_object(name);
+                for (unsigned int c = 0; c < dim; ++c)
+                  json.value(comps[c], (*values)[c]);
+                json.end_object();
+              }
+            json.begin_object("max_stress");
+            for (unsigned int c = 0; c < scomps.size(); ++c)
+              json.value(scomps[c], smax[c]);
+            json.end_object();
+            json.begin_object("min_stress");
+            for (unsigned int c = 0; c < scomps.size(); ++c)
+              json.value(scomps[c], smin[c]);
+            json.end_object();
+            json.value("max_principal_stress", s1max);
+            json.value("max_damage", dmax);
+            json.begin_object("reaction");
+            const auto reactions = system.reactions();
+            for (std::size_t s = 0; s < reaction_sets.size(); ++s)
+              {
+                json.begin_object(reaction_sets[s]);
+                for (unsigned int c = 0; c < dim; ++c)
+                  json.value(comps[c], reactions[s][c]);
+                json.end_object();
+              }
+            json.end_object();
+            json.end_object();
+
+            json.begin_object("timings");
+            for (const char *phase :
+                 {"setup", "assembly", "solve", "output", "total"})
+              json.value(phase, timings[phase]);
+            json.end_object();
+            json.end_object();
+          }
+
+        if (progress)
+          {
+            *progress << "Exit state: " << exit_state << ". Results in "
+                      << out_dir << "/" << std::endl;
+            if (prm.output.print_timings)
+              for (const char *phase :
+                   {"setup", "assembly", "solve", "output", "total"})
+                *progress << "  " << std::setw(9) << std::left << phase
+                          << std::right << std::setw(10) << std::fixed
+                          << std::setprecision(3) << timings[phase] << " s"
+                          << std::defaultfloat << std::endl;
+          }
+        return exit_state == "completed" ? ExitCode::completed :
+                                           ExitCode::run_failure;
+      }
+    } // namespace
+
+    int
+    run(const std::string &file, const RunOptions &options, MPI_Comm comm)
+    {
+      const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+      try
+        {
+          Parameters::Scene prm;
+          prm.read(file, options.overrides);
+          if (prm.dim == 2)
+            return run_scene<2>(prm, options, comm);
+#if PDFEM_WITH_3D
+          return run_scene<3>(prm, options, comm);
+#else
+          throw InputError(file,
+                           "Dimension",
+                           "this pdfem was built without 3D",
+                           "2 (rebuild with PDFEM_WITH_3D=ON for 3)");
+#endif
+        }
+      catch (const InputError &e)
+        {
+          if (root)
+            std::cerr << "pdfem: error: " << e.what() << std::endl;
+          return ExitCode::input_error;
+        }
+    }
+  } // namespace Scene
+} // namespace pdfem

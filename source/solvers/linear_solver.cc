@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <pdfem/base/exceptions.h>
+#include <pdfem/solvers/linear_solver.h>
+
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <cmath>
+
+namespace pdfem
+{
+  namespace Solvers
+  {
+    using namespace dealii;
+
+    LinearSolver::LinearSolver(const Parameters::LinearSolver &settings)
+      : settings(settings)
+    {}
+
+    LinearSolver::~LinearSolver() = default;
+
+    void
+    LinearSolver::set_constant_modes(const std::vector<std::vector<bool>> &m)
+    {
+      constant_modes = m;
+    }
+
+    unsigned int
+    LinearSolver::solve(const TrilinosWrappers::SparseMatrix &K,
+                        TrilinosWrappers::MPI::Vector        &x,
+                        const TrilinosWrappers::MPI::Vector  &b)
+    {
+      unsigned int iterations = 1;
+      if (settings.type == "direct")
+        {
+          SolverControl control(1, 0);
+          TrilinosWrappers::SolverDirect::AdditionalData data(
+            false,
+            settings.direct_solver == "klu" ? "Amesos_Klu" : "Amesos_Mumps");
+          TrilinosWrappers::SolverDirect solver(control, data);
+          try
+            {
+              solver.solve(K, x, b);
+            }
+          catch (const std::exception &e)
+            {
+              throw RunFailure("singular matrix",
+                               "the direct solver failed: " +
+                                 std::string(e.what()).substr(0, 200));
+            }
+        }
+      else
+        {
+          const double  b_norm = b.l2_norm();
+          SolverControl control(settings.max_iterations,
+                                settings.tolerance * b_norm,
+                                false,
+                                false);
+          TrilinosWrappers::SolverGMRES solver(
+            control, TrilinosWrappers::SolverGMRES::AdditionalData(false, 200));
+          try
+            {
+              if (settings.preconditioner == "amg")
+                {
+                  TrilinosWrappers::PreconditionAMG                amg;
+                  TrilinosWrappers::PreconditionAMG::AdditionalData data;
+                  data.elliptic              = false;
+                  data.higher_order_elements = false;
+                  data.smoother_sweeps       = 2;
+                  data.aggregation_threshold = 0.02;
+                  data.constant_modes        = constant_modes;
+                  amg.initialize(K, data);
+                  solver.solve(K, x, b, amg);
+                }
+              else
+                {
+                  TrilinosWrappers::PreconditionILU ilu;
+                  ilu.initialize(
+                    K,
+                    TrilinosWrappers::PreconditionILU::AdditionalData(1,
+                                                                      0.,
+                                                                      1.,
+                                                                      1));
+                  solver.solve(K, x, b, ilu);
+                }
+            }
+          catch (const std::exception &e)
+            {
+              throw RunFailure("linear solver diverged",
+                               "GMRES did not reach the tolerance " +
+                                 std::to_string(settings.tolerance) + " in " +
+                                 std::to_string(control.last_step()) +
+                                 " iterations");
+            }
+          iterations = control.last_step();
+        }
+      if (!std::isfinite(x.l2_norm()))
+        throw RunFailure(settings.type == "direct" ? "singular matrix" :
+                                                     "linear solver diverged",
+                         "the solution of the linear system is not finite");
+      return iterations;
+    }
+  } // namespace Solvers
+} // namespace pdfem

@@ -1,0 +1,101 @@
+# Runs one scene test: cmake -DPDFEM=... -DCHECKER=... -DPRM=... -DWORK=... -DMPIEXEC=... -P run_scene_test.cmake
+#
+# Directives read from the scene's comments:
+#   # CHECK: <json key> = <value> rel|abs <tol>   a value in summary.json
+#   # EXIT-STATE: <state>                          expected exit_state (default completed)
+#   # EXPECT-ERROR: <text>                         bad input: exit status 2 and one line
+#                                                  "pdfem: error: ..." containing <text>
+#   # MPI: <n>                                     also run on n ranks: the same checks, and
+#                                                  nodes.csv equal to the 1-rank one (1e-10)
+#   # REQUIRES: <path relative to the scene>      skip (not fail) when the path is absent
+cmake_minimum_required(VERSION 3.16)
+set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
+set(ENV{OMPI_ALLOW_RUN_AS_ROOT_CONFIRM} 1)
+set(ENV{OMPI_MCA_rmaps_base_oversubscribe} 1)
+
+file(STRINGS "${PRM}" directives REGEX "^# (CHECK|EXIT-STATE|EXPECT-ERROR|MPI|REQUIRES):")
+get_filename_component(scene_dir "${PRM}" DIRECTORY)
+set(checks "")
+set(exit_state "completed")
+set(expect_error "")
+set(n_ranks 0)
+foreach(line IN LISTS directives)
+  if(line MATCHES "^# CHECK: *([^ ]+) *= *([^ ]+) +(rel|abs) +([^ ]+)")
+    list(APPEND checks "${CMAKE_MATCH_1}|${CMAKE_MATCH_2}|${CMAKE_MATCH_3}|${CMAKE_MATCH_4}")
+  elseif(line MATCHES "^# EXIT-STATE: *(.+)$")
+    string(STRIP "${CMAKE_MATCH_1}" exit_state)
+  elseif(line MATCHES "^# EXPECT-ERROR: *(.+)$")
+    string(STRIP "${CMAKE_MATCH_1}" expect_error)
+  elseif(line MATCHES "^# MPI: *([0-9]+)")
+    set(n_ranks ${CMAKE_MATCH_1})
+  elseif(line MATCHES "^# REQUIRES: *(.+)$")
+    string(STRIP "${CMAKE_MATCH_1}" required)
+    if(NOT EXISTS "${scene_dir}/${required}")
+      message("PDFEM_TEST_SKIPPED: ${scene_dir}/${required} is absent")
+      return()
+    endif()
+  endif()
+endforeach()
+
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}")
+
+if(expect_error)
+  execute_process(COMMAND "${PDFEM}" "${PRM}" --output "${WORK}/out" --quiet
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("${err}")
+  if(NOT rc EQUAL 2)
+    message(FATAL_ERROR "expected exit status 2 (bad input), got ${rc}")
+  endif()
+  string(STRIP "${err}" err_stripped)
+  string(FIND "${err_stripped}" "\n" newline)
+  if(NOT newline EQUAL -1 OR NOT err_stripped MATCHES "^pdfem: error: ")
+    message(FATAL_ERROR "expected exactly one line 'pdfem: error: ...' on stderr")
+  endif()
+  string(FIND "${err}" "${expect_error}" found)
+  if(found EQUAL -1)
+    message(FATAL_ERROR "the message does not mention '${expect_error}'")
+  endif()
+  if(EXISTS "${WORK}/out/history.csv")
+    message(FATAL_ERROR "bad input must stop before any work, but history.csv was written")
+  endif()
+  return()
+endif()
+
+function(run_and_check tag launcher)
+  execute_process(COMMAND ${launcher} "${PDFEM}" "${PRM}" --output "${WORK}/${tag}" --quiet
+    --set "Output/Write nodes csv=true"
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("${out}${err}")
+  if(NOT EXISTS "${WORK}/${tag}/summary.json")
+    message(FATAL_ERROR "${tag}: no summary.json (exit status ${rc})")
+  endif()
+  execute_process(COMMAND "${CHECKER}" string "${WORK}/${tag}/summary.json" exit_state "${exit_state}"
+    RESULT_VARIABLE crc)
+  set(failed ${crc})
+  foreach(check IN LISTS checks)
+    string(REPLACE "|" ";" parts "${check}")
+    list(GET parts 0 key)
+    list(GET parts 1 value)
+    list(GET parts 2 kind)
+    list(GET parts 3 tol)
+    execute_process(COMMAND "${CHECKER}" value "${WORK}/${tag}/summary.json" ${key} ${value} ${kind} ${tol}
+      RESULT_VARIABLE crc)
+    if(crc)
+      set(failed 1)
+    endif()
+  endforeach()
+  if(failed)
+    message(FATAL_ERROR "${tag}: checks failed")
+  endif()
+endfunction()
+
+run_and_check(np1 "")
+if(n_ranks GREATER 1)
+  run_and_check(np${n_ranks} "${MPIEXEC};-np;${n_ranks}")
+  execute_process(COMMAND "${CHECKER}" csv "${WORK}/np1/nodes.csv" "${WORK}/np${n_ranks}/nodes.csv" 1e-10
+    RESULT_VARIABLE crc)
+  if(crc)
+    message(FATAL_ERROR "the ${n_ranks}-rank result differs from the 1-rank result")
+  endif()
+endif()

@@ -1,0 +1,250 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// pdfem_check: numeric checks on pdfem's outputs for the test suite (no deal.II,
+// so it compiles in a second).
+//
+//   pdfem_check value  summary.json KEY EXPECTED rel|abs TOL
+//       KEY is a dotted path (final.max_displacement.x); passes if
+//       |v - e| <= TOL |e| (rel) or |v - e| <= TOL (abs).
+//   pdfem_check string summary.json KEY EXPECTED
+//   pdfem_check csv    a.csv b.csv TOL
+//       same header and rows; every column agrees to TOL relative to the
+//       largest magnitude among the columns of its quantity (same first
+//       letter).
+// Prints one line per check and exits 1 on any failure.
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  /// Just enough JSON: objects, numbers, strings, true/false/null.
+  struct Value
+  {
+    enum Kind
+    {
+      object,
+      number,
+      text,
+      boolean,
+      null
+    } kind = null;
+    double                                        x = 0.;
+    std::string                                   s;
+    std::vector<std::pair<std::string, Value>> members;
+  };
+
+  struct Parser
+  {
+    const std::string &t;
+    std::size_t        i = 0;
+
+    void
+    ws()
+    {
+      while (i < t.size() && std::isspace(static_cast<unsigned char>(t[i])))
+        ++i;
+    }
+    std::string
+    string()
+    {
+      std::string out;
+      ++i; // opening quote
+      while (i < t.size() && t[i] != '"')
+        {
+          if (t[i] == '\\' && i + 1 < t.size())
+            ++i;
+          out += t[i++];
+        }
+      ++i;
+      return out;
+    }
+    Value
+    value()
+    {
+      ws();
+      Value v;
+      if (t[i] == '{')
+        {
+          v.kind = Value::object;
+          ++i;
+          ws();
+          if (t[i] == '}')
+            {
+              ++i;
+              return v;
+            }
+          while (true)
+            {
+              ws();
+              const std::string key = string();
+              ws();
+              ++i; // ':'
+              v.members.emplace_back(key, value());
+              ws();
+              if (t[i++] == '}')
+                break;
+            }
+        }
+      else if (t[i] == '"')
+        {
+          v.kind = Value::text;
+          v.s    = string();
+        }
+      else if (t.compare(i, 4, "true") == 0 || t.compare(i, 5, "false") == 0)
+        {
+          v.kind = Value::boolean;
+          v.x    = t[i] == 't';
+          i += t[i] == 't' ? 4 : 5;
+        }
+      else if (t.compare(i, 4, "null") == 0)
+        i += 4;
+      else
+        {
+          v.kind          = Value::number;
+          const char *b   = t.c_str() + i;
+          char       *end = nullptr;
+          v.x             = std::strtod(b, &end);
+          i += end - b;
+        }
+      return v;
+    }
+  };
+
+  const Value *
+  find(const Value &root, const std::string &key)
+  {
+    const Value       *v = &root;
+    std::stringstream  path(key);
+    std::string        part;
+    while (std::getline(path, part, '.'))
+      {
+        const Value *next = nullptr;
+        for (const auto &[k, m] : v->members)
+          if (k == part)
+            next = &m;
+        if (!next)
+          return nullptr;
+        v = next;
+      }
+    return v;
+  }
+
+  Value
+  load(const std::string &file)
+  {
+    std::ifstream     in(file);
+    std::stringstream s;
+    s << in.rdbuf();
+    const std::string text = s.str();
+    if (text.empty())
+      {
+        std::cerr << "pdfem_check: cannot read " << file << "\n";
+        std::exit(1);
+      }
+    Parser p{text};
+    return p.value();
+  }
+
+  std::vector<std::vector<std::string>>
+  read_csv(const std::string &file)
+  {
+    std::ifstream                         in(file);
+    std::vector<std::vector<std::string>> rows;
+    std::string                           line;
+    while (std::getline(in, line))
+      {
+        std::vector<std::string> row;
+        std::stringstream        s(line);
+        std::string              cell;
+        while (std::getline(s, cell, ','))
+          row.push_back(cell);
+        rows.push_back(row);
+      }
+    return rows;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  const std::vector<std::string> a(argv + 1, argv + argc);
+  if (a.size() == 4 && a[0] == "string")
+    {
+      const Value  root = load(a[1]);
+      const Value *v    = find(root, a[2]);
+      const bool   ok   = v && v->kind == Value::text && v->s == a[3];
+      std::cout << (ok ? "ok   " : "FAIL ") << a[2] << " = "
+                << (v ? v->s : "(missing)") << ", expected " << a[3] << "\n";
+      return ok ? 0 : 1;
+    }
+  if (a.size() == 6 && a[0] == "value")
+    {
+      const Value  root     = load(a[1]);
+      const Value *v        = find(root, a[2]);
+      const double expected = std::stod(a[3]);
+      const double tol      = std::stod(a[5]);
+      if (!v || v->kind != Value::number)
+        {
+          std::cout << "FAIL " << a[2] << " is missing or not a number\n";
+          return 1;
+        }
+      const double error = std::abs(v->x - expected);
+      const double bound = a[4] == "rel" ? tol * std::abs(expected) : tol;
+      const bool   ok    = error <= bound;
+      std::cout.precision(10);
+      std::cout << (ok ? "ok   " : "FAIL ") << a[2] << " = " << v->x
+                << ", expected " << expected << " (" << a[4] << " " << tol
+                << ")\n";
+      return ok ? 0 : 1;
+    }
+  if (a.size() == 4 && a[0] == "csv")
+    {
+      const auto   x   = read_csv(a[1]);
+      const auto   y   = read_csv(a[2]);
+      const double tol = std::stod(a[3]);
+      if (x.empty() || x.size() != y.size() || x[0] != y[0])
+        {
+          std::cout << "FAIL " << a[1] << " and " << a[2]
+                    << " differ in header or number of rows\n";
+          return 1;
+        }
+      // Columns of one quantity (same first letter: ux, uy; sxx, sxy...) share
+      // a scale, so that a component that is zero up to round-off is judged
+      // against the size of the quantity, not against its own noise.
+      const std::size_t   n_cols = x[0].size();
+      std::vector<double> column_max(n_cols, 0.), error(n_cols, 0.);
+      for (std::size_t c = 0; c < n_cols; ++c)
+        for (std::size_t r = 1; r < x.size(); ++r)
+          {
+            const double u = std::stod(x[r].at(c)), v = std::stod(y[r].at(c));
+            column_max[c] =
+              std::max(column_max[c], std::max(std::abs(u), std::abs(v)));
+            error[c] = std::max(error[c], std::abs(u - v));
+          }
+      bool ok = true;
+      for (std::size_t c = 0; c < n_cols; ++c)
+        {
+          double scale = 0.;
+          for (std::size_t d = 0; d < n_cols; ++d)
+            if (x[0][d][0] == x[0][c][0])
+              scale = std::max(scale, column_max[d]);
+          const bool column_ok = error[c] <= tol * scale;
+          ok                   = ok && column_ok;
+          std::cout.precision(3);
+          std::cout << (column_ok ? "ok   " : "FAIL ") << "column " << x[0][c]
+                    << ": max difference " << error[c] << " (scale " << scale
+                    << ")\n";
+        }
+      return ok ? 0 : 1;
+    }
+  std::cerr << "usage: pdfem_check value FILE KEY EXPECTED rel|abs TOL\n"
+               "       pdfem_check string FILE KEY EXPECTED\n"
+               "       pdfem_check csv A B TOL\n";
+  return 2;
+}
