@@ -1,14 +1,16 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// CoupledSystem: internal force, tangent, external force, residual, solve.
+// CoupledSystem: internal force, tangent (assembled or matrix-free), external
+// force, residual, solve.
 #include <pdfem/base/config.h>
 
 #include <deal.II/base/mpi.h>
+
 #include <deal.II/fe/fe_values_extractors.h>
 #include <deal.II/hp/fe_values.h>
 
-#include "coupled_system_impl.h"
-
 #include <cmath>
+
+#include "coupled_system_impl.h"
 
 namespace pdfem
 {
@@ -32,9 +34,11 @@ namespace pdfem
     template <int dim>
     void
     CoupledSystem<dim>::Impl::add_to_matrix(
+      TrilinosWrappers::SparseMatrix      &target,
       const std::vector<global_dof_index> &rows,
       const std::vector<global_dof_index> &cols,
-      const std::vector<double>           &values)
+      const std::vector<double>           &values,
+      const bool                           eliminate) const
     {
       // Prescribed DoFs: their rows are replaced by a diagonal entry (added
       // once, after assembly) and their columns dropped, since du = 0 there.
@@ -42,100 +46,263 @@ namespace pdfem
       static thread_local std::vector<double>           v;
       for (std::size_t i = 0; i < rows.size(); ++i)
         {
-          if (dof_fixed[rows[i]])
+          if (eliminate && dof_fixed[rows[i]])
             continue;
           c.clear();
           v.clear();
           for (std::size_t j = 0; j < cols.size(); ++j)
-            if (!dof_fixed[cols[j]])
+            if (!eliminate || !dof_fixed[cols[j]])
               {
                 c.push_back(cols[j]);
                 v.push_back(values[i * cols.size() + j]);
               }
-          matrix.add(rows[i], c.size(), c.data(), v.data(), false, false);
+          target.add(rows[i], c.size(), c.data(), v.data(), false, false);
+        }
+    }
+
+    template <int dim>
+    template <typename FEValuesType>
+    void
+    CoupledSystem<dim>::Impl::cell_stiffness(const FEValuesType  &fv,
+                                             std::vector<double> &K) const
+    {
+      // K_ij = int lambda div(phi_i) div(phi_j) + 2 mu eps(phi_i):eps(phi_j)
+      const double                     lambda = settings.material.lambda();
+      const double                     mu     = settings.material.mu();
+      const FEValuesExtractors::Vector displacement(0);
+      const unsigned int               n = fv.dofs_per_cell;
+      static thread_local std::vector<SymmetricTensor<2, dim>> eps;
+      static thread_local std::vector<double>                  div;
+      K.assign(n * n, 0.);
+      eps.resize(n);
+      div.resize(n);
+      for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
+        {
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              eps[i] = fv[displacement].symmetric_gradient(i, q);
+              div[i] = fv[displacement].divergence(i, q);
+            }
+          const double JxW = fv.JxW(q);
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              K[i * n + j] +=
+                (lambda * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) * JxW;
+        }
+    }
+
+    template <int dim>
+    double
+    CoupledSystem<dim>::Impl::held_diagonal(const global_dof_index i) const
+    {
+      return settings.material.youngs_modulus *
+             std::pow(volume[dof_to_node[i]], (dim - 2.) / dim);
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::update_held()
+    {
+      held_lid.clear();
+      held_value.clear();
+      for (const auto i : owned)
+        if (dof_fixed[i])
+          {
+            held_lid.push_back(owned.index_within_set(i));
+            held_value.push_back(held_diagonal(i));
+          }
+      for (std::size_t o = 0; o < families.owners.size(); ++o)
+        if (decoupled[o])
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              const auto i = node_dof[families.owners[o]][c];
+              if (!dof_fixed[i])
+                {
+                  held_lid.push_back(owned.index_within_set(i));
+                  held_value.push_back(held_diagonal(i));
+                }
+            }
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::add_held_diagonal(
+      TrilinosWrappers::SparseMatrix &target) const
+    {
+      for (unsigned int i = 0; i < held_lid.size(); ++i)
+        {
+          const auto dof = owned.nth_index_in_set(held_lid[i]);
+          target.add(dof, dof, held_value[i]);
         }
     }
 
     template <int dim>
     void
-    CoupledSystem<dim>::Impl::assemble_internal(
-      const TrilinosWrappers::MPI::Vector &u,
-      const bool                           assemble_tangent)
+    CoupledSystem<dim>::Impl::assemble_fe_matrix()
     {
-      f_int = 0.;
-      if (assemble_tangent)
-        matrix = 0.;
-      const double lambda = settings.material.lambda();
-      const double mu     = settings.material.mu();
-
-      // ---- FE cells: K_e = int B^T D B dV, f_e = K_e u_e.
-      hp::FEValues<dim>                    fe_values(mapping,
+      fe_matrix = 0.;
+      hp::FEValues<dim>             fe_values(mapping,
                                   fe,
                                   quadrature,
                                   update_gradients | update_JxW_values);
-      const FEValuesExtractors::Vector     displacement(0);
-      std::vector<global_dof_index>        local_dofs;
-      std::vector<double>                  K, f, u_local;
-      std::vector<SymmetricTensor<2, dim>> eps;
-      std::vector<double>                  div;
+      std::vector<global_dof_index> local_dofs;
+      std::vector<double>           K;
       for (const auto &cell : dofs.active_cell_iterators())
-        {
-          if (!cell->is_locally_owned() || cell_pd[cell->active_cell_index()])
-            continue;
-          fe_values.reinit(cell);
-          const FEValues<dim> &fv = fe_values.get_present_fe_values();
-          const unsigned int   n  = fv.dofs_per_cell;
-          local_dofs.resize(n);
-          cell->get_dof_indices(local_dofs);
-          K.assign(n * n, 0.);
-          eps.resize(n);
-          div.resize(n);
-          for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
-            {
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  eps[i] = fv[displacement].symmetric_gradient(i, q);
-                  div[i] = fv[displacement].divergence(i, q);
-                }
-              const double JxW = fv.JxW(q);
-              for (unsigned int i = 0; i < n; ++i)
-                for (unsigned int j = 0; j < n; ++j)
-                  K[i * n + j] +=
-                    (lambda * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) *
-                    JxW;
-            }
-          u_local.resize(n);
-          for (unsigned int j = 0; j < n; ++j)
-            u_local[j] = u[local_dofs[j]];
-          f.assign(n, 0.);
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j < n; ++j)
-              f[i] += K[i * n + j] * u_local[j];
-          f_int.add(local_dofs, f);
-          if (assemble_tangent)
-            add_to_matrix(local_dofs, local_dofs, K);
-        }
+        if (cell->is_locally_owned() && !cell_pd[cell->active_cell_index()])
+          {
+            fe_values.reinit(cell);
+            cell_stiffness(fe_values.get_present_fe_values(), K);
+            local_dofs.resize(cell->get_fe().n_dofs_per_cell());
+            cell->get_dof_indices(local_dofs);
+            add_to_matrix(fe_matrix, local_dofs, local_dofs, K, false);
+          }
+      fe_matrix.compress(VectorOperation::add);
+    }
 
-      // ---- PD families: row k gets V_k (-L_k) + sigma_k s_k, summed over
-      // the intact bonds with the weights of the whole family.
-      std::vector<Tensor<1, dim>>          a;
-      std::vector<SymmetricTensor<2, dim>> b;
-      std::vector<std::size_t>             bond;
-      std::vector<global_dof_index>        rows(dim), cols;
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::assemble_auxiliary()
+    {
+      auxiliary = 0.;
+      hp::FEValues<dim>             fe_values(mapping,
+                                  fe,
+                                  quadrature,
+                                  update_gradients | update_JxW_values);
+      std::vector<global_dof_index> local_dofs;
+      std::vector<double>           K;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            cell_stiffness(fe_values.get_present_fe_values(), K);
+            local_dofs.resize(cell->get_fe().n_dofs_per_cell());
+            cell->get_dof_indices(local_dofs);
+            add_to_matrix(auxiliary, local_dofs, local_dofs, K);
+          }
+      add_held_diagonal(auxiliary);
+      auxiliary.compress(VectorOperation::add);
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::apply_pd(const TrilinosWrappers::MPI::Vector &x,
+                                       TrilinosWrappers::MPI::Vector &y) const
+    {
+      // Row k: V_k (-L_k) + sigma_k s_k over the intact bonds, i.e.
+      // sum_m (-V_k G_m + T_m)(x_m - x_k) with G_m = divergence block of b_m
+      // and T_m = traction block of (s_k, a_m). Raw local arrays: the
+      // ghosted x by relevant_lid, the owned y by owned_lid.
+      const double *xv = x.trilinos_vector()[0];
+      double       *yv = y.trilinos_vector()[0];
+      const double  lambda_mu =
+        settings.material.lambda() + settings.material.mu();
+      const double   mu = settings.material.mu();
+      Tensor<1, dim> xk, dx;
       for (std::size_t o = 0; o < families.owners.size(); ++o)
         {
           if (decoupled[o])
             continue;
           const unsigned int k = families.owners[o];
-          family_weights(o, a, b); // checked at set-up
-          bond.clear();
+          for (unsigned int c = 0; c < dim; ++c)
+            xk[c] = xv[relevant_lid[k][c]];
+          const Tensor<1, dim> s        = boundary_area[k];
+          const bool           boundary = s.norm_square() > 0.;
+          // L_k = sum_m G_m dx_m with G_m dx = (lambda + mu) b_m dx
+          // + mu tr(b_m) dx, without forming G_m.
+          Tensor<1, dim> bdx_sum, trdx_sum, traction;
           for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
                ++j)
-            if (families.intact[j])
-              bond.push_back(j);
+            {
+              if (!families.intact[j])
+                continue;
+              const auto &lid = relevant_lid[families.members[j]];
+              for (unsigned int c = 0; c < dim; ++c)
+                dx[c] = xv[lid[c]] - xk[c];
+              const SymmetricTensor<2, dim> &b = weight_b[j];
+              bdx_sum += b * dx;
+              trdx_sum += trace(b) * dx;
+              if (boundary)
+                traction += pdlsm.traction_block(s, weight_a[j]) * dx;
+            }
+          const Tensor<1, dim> f =
+            -pd_volume[k] * (lambda_mu * bdx_sum + mu * trdx_sum) + traction;
+          for (unsigned int c = 0; c < dim; ++c)
+            yv[owned_lid[k][c]] += f[c];
+        }
+    }
 
-          const std::size_t n_cols = dim * (bond.size() + 1);
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::compute_internal_force(
+      const TrilinosWrappers::MPI::Vector &u)
+    {
+      // f_int = K_FE u + PD(u); every PD row is owned.
+      u_ghosted = u;
+      fe_matrix.vmult(x_masked, u);
+      f_int = 0.;
+      f_int += x_masked;
+      apply_pd(u_ghosted, f_int);
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::vmult(
+      TrilinosWrappers::MPI::Vector       &y,
+      const TrilinosWrappers::MPI::Vector &x) const
+    {
+      // y = K x with held DoFs eliminated: x with its held entries zeroed
+      // through the FE matrix and the PD kernel, then the diagonal on the
+      // held rows.
+      x_masked         = x;
+      double       *xm = x_masked.trilinos_vector()[0];
+      const double *xv = x.trilinos_vector()[0];
+      double       *yv = nullptr;
+      for (unsigned int i = 0; i < held_lid.size(); ++i)
+        xm[held_lid[i]] = 0.;
+      fe_matrix.vmult(y, x_masked);
+      x_ghosted = x_masked;
+      apply_pd(x_ghosted, y);
+      yv = y.trilinos_vector()[0];
+      for (unsigned int i = 0; i < held_lid.size(); ++i)
+        yv[held_lid[i]] = held_value[i] * xv[held_lid[i]];
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::assemble_tangent()
+    {
+      matrix = 0.;
+      // FE cells.
+      hp::FEValues<dim>             fe_values(mapping,
+                                  fe,
+                                  quadrature,
+                                  update_gradients | update_JxW_values);
+      std::vector<global_dof_index> local_dofs;
+      std::vector<double>           K;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned() && !cell_pd[cell->active_cell_index()])
+          {
+            fe_values.reinit(cell);
+            cell_stiffness(fe_values.get_present_fe_values(), K);
+            local_dofs.resize(cell->get_fe().n_dofs_per_cell());
+            cell->get_dof_indices(local_dofs);
+            add_to_matrix(matrix, local_dofs, local_dofs, K);
+          }
+
+      // PD rows: the blocks of apply_pd, owner first.
+      std::vector<global_dof_index> rows(dim), cols;
+      for (std::size_t o = 0; o < families.owners.size(); ++o)
+        {
+          if (decoupled[o])
+            continue;
+          const unsigned int k        = families.owners[o];
+          std::size_t        n_intact = 0;
+          for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
+               ++j)
+            n_intact += families.intact[j];
+          const std::size_t n_cols = dim * (n_intact + 1);
           K.assign(dim * n_cols, 0.);
+          cols.resize(n_cols);
           auto add_block = [&](const std::size_t     block,
                                const Tensor<2, dim> &B,
                                const double          factor) {
@@ -146,61 +313,27 @@ namespace pdfem
           const double         Vk       = pd_volume[k];
           const Tensor<1, dim> s        = boundary_area[k];
           const bool           boundary = s.norm_square() > 0.;
-          for (std::size_t n = 0; n < bond.size(); ++n)
-            {
-              const std::size_t    m = bond[n] - families.offsets[o];
-              const Tensor<2, dim> G = pdlsm.divergence_block(b[m]);
-              add_block(n + 1, G, -Vk);
-              add_block(0, G, Vk);
-              if (boundary)
-                {
-                  const Tensor<2, dim> T = pdlsm.traction_block(s, a[m]);
-                  add_block(n + 1, T, 1.);
-                  add_block(0, T, -1.);
-                }
-            }
-          cols.resize(n_cols);
+          std::size_t          block    = 0;
           for (unsigned int c = 0; c < dim; ++c)
+            rows[c] = cols[c] = node_dof[k][c];
+          for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
+               ++j)
             {
-              rows[c] = node_dof[k][c];
-              cols[c] = node_dof[k][c];
-              for (std::size_t n = 0; n < bond.size(); ++n)
-                cols[dim * (n + 1) + c] = node_dof[families.members[bond[n]]][c];
-            }
-          u_local.resize(n_cols);
-          for (std::size_t j = 0; j < n_cols; ++j)
-            u_local[j] = u[cols[j]];
-          f.assign(dim, 0.);
-          for (unsigned int i = 0; i < dim; ++i)
-            for (std::size_t j = 0; j < n_cols; ++j)
-              f[i] += K[i * n_cols + j] * u_local[j];
-          f_int.add(rows, f);
-          if (assemble_tangent)
-            add_to_matrix(rows, cols, K);
-        }
-      f_int.compress(VectorOperation::add);
-
-      if (assemble_tangent)
-        {
-          // Prescribed and decoupled DoFs: a diagonal of the size of the
-          // node's stiffness, E * Delta^(dim-2).
-          const double E = settings.material.youngs_modulus;
-          for (const auto i : owned)
-            if (dof_fixed[i])
-              matrix.add(i,
-                         i,
-                         E * std::pow(volume[dof_to_node[i]],
-                                      (dim - 2.) / dim));
-          for (std::size_t o = 0; o < families.owners.size(); ++o)
-            if (decoupled[o])
+              if (!families.intact[j])
+                continue;
+              ++block;
+              Tensor<2, dim> B = -Vk * pdlsm.divergence_block(weight_b[j]);
+              if (boundary)
+                B += pdlsm.traction_block(s, weight_a[j]);
+              add_block(block, B, 1.);
+              add_block(0, B, -1.);
               for (unsigned int c = 0; c < dim; ++c)
-                if (!dof_fixed[node_dof[families.owners[o]][c]])
-                  matrix.add(node_dof[families.owners[o]][c],
-                             node_dof[families.owners[o]][c],
-                             E * std::pow(volume[families.owners[o]],
-                                          (dim - 2.) / dim));
-          matrix.compress(VectorOperation::add);
+                cols[dim * block + c] = node_dof[families.members[j]][c];
+            }
+          add_to_matrix(matrix, rows, cols, K);
         }
+      add_held_diagonal(matrix);
+      matrix.compress(VectorOperation::add);
     }
 
     template <int dim>
@@ -229,7 +362,7 @@ namespace pdfem
                 {
                   if (!cell->at_boundary(face))
                     continue;
-                  const auto id = cell->face(face)->boundary_id();
+                  const auto id            = cell->face(face)->boundary_id();
                   bool       reinitialised = false;
                   for (std::size_t c = 0; c < settings.traction.size(); ++c)
                     {
@@ -261,7 +394,9 @@ namespace pdfem
                           for (unsigned int i = 0; i < n; ++i)
                             {
                               const unsigned int comp =
-                                cell->get_fe().system_to_component_index(i).first;
+                                cell->get_fe()
+                                  .system_to_component_index(i)
+                                  .first;
                               f[i] += fv.shape_value(i, q) * traction[comp] *
                                       fv.JxW(q);
                             }
@@ -274,11 +409,12 @@ namespace pdfem
       if (body_fn)
         {
           body_fn->set_time(t);
-          hp::FEValues<dim> fe_values(mapping,
+          hp::FEValues<dim>      fe_values(mapping,
                                       fe,
                                       quadrature,
                                       update_values | update_quadrature_points |
                                         update_JxW_values);
+          dealii::Vector<double> b(dim);
           for (const auto &cell : dofs.active_cell_iterators())
             {
               if (!cell->is_locally_owned())
@@ -291,7 +427,6 @@ namespace pdfem
               f.assign(n, 0.);
               for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
                 {
-                  dealii::Vector<double> b(dim);
                   body_fn->vector_value(to_3d(fv.quadrature_point(q)), b);
                   for (unsigned int i = 0; i < n; ++i)
                     {
@@ -328,10 +463,11 @@ namespace pdfem
                                  Vector       &r,
                                  const bool    assemble_tangent)
     {
-      Impl &s     = *impl;
-      s.u_ghosted = u;
-      s.assemble_internal(s.u_ghosted, assemble_tangent);
+      Impl &s = *impl;
+      s.compute_internal_force(u);
       s.assemble_external(t);
+      if (assemble_tangent && !s.matrix_free)
+        s.assemble_tangent();
 
       // Reactions: the force the supports exert, f_int - f_ext, summed over
       // each set's nodes (every component), for the 2D thickness.
@@ -351,18 +487,10 @@ namespace pdfem
       r -= s.f_int;
       Vector free_f_ext(s.owned, s.comm);
       free_f_ext = s.f_ext;
-      for (const auto i : s.owned)
-        if (s.dof_fixed[i])
-          {
-            r[i]          = 0.;
-            free_f_ext[i] = 0.;
-          }
-      for (std::size_t o = 0; o < s.families.owners.size(); ++o)
-        if (s.decoupled[o])
-          for (unsigned int c = 0; c < dim; ++c)
-            r[s.node_dof[s.families.owners[o]][c]] = 0.;
-      r.compress(VectorOperation::insert);
-      free_f_ext.compress(VectorOperation::insert);
+      double *rv = r.trilinos_vector()[0];
+      double *fv = free_f_ext.trilinos_vector()[0];
+      for (const unsigned int lid : s.held_lid)
+        rv[lid] = fv[lid] = 0.;
       s.f_ext_norm = free_f_ext.l2_norm();
       return r.l2_norm();
     }
@@ -378,25 +506,34 @@ namespace pdfem
     unsigned int
     CoupledSystem<dim>::solve_linear(Vector &du, const Vector &r)
     {
-      du.reinit(impl->owned, impl->comm);
-      return impl->solver.solve(impl->matrix, du, r);
+      Impl &s = *impl;
+      du.reinit(s.owned, s.comm);
+      if (s.matrix_free)
+        return s.solver.solve([&s](Vector       &y,
+                                   const Vector &x) { s.vmult(y, x); },
+                              du,
+                              r,
+                              s.auxiliary);
+      return s.solver.solve(s.matrix, du, r);
     }
 
-#define INSTANTIATE(dim)                                                     \
-  template void CoupledSystem<dim>::Impl::add_to_matrix(                     \
-    const std::vector<global_dof_index> &,                                   \
-    const std::vector<global_dof_index> &,                                   \
-    const std::vector<double> &);                                            \
-  template void CoupledSystem<dim>::Impl::assemble_internal(                 \
-    const TrilinosWrappers::MPI::Vector &, bool);                            \
-  template void   CoupledSystem<dim>::Impl::assemble_external(double);       \
+#define INSTANTIATE(dim)                                                       \
+  template void CoupledSystem<dim>::Impl::assemble_fe_matrix();                \
+  template void CoupledSystem<dim>::Impl::update_held();                       \
+  template void CoupledSystem<dim>::Impl::assemble_auxiliary();                \
+  template void CoupledSystem<dim>::Impl::add_to_matrix(                       \
+    TrilinosWrappers::SparseMatrix &,                                          \
+    const std::vector<global_dof_index> &,                                     \
+    const std::vector<global_dof_index> &,                                     \
+    const std::vector<double> &,                                               \
+    bool) const;                                                               \
   template void   CoupledSystem<dim>::apply_dirichlet(Vector &, double) const; \
-  template double CoupledSystem<dim>::residual(const Vector &,               \
-                                               double,                       \
-                                               Vector &,                     \
-                                               bool);                        \
-  template double CoupledSystem<dim>::external_force_norm() const;           \
-  template unsigned int CoupledSystem<dim>::solve_linear(Vector &,           \
+  template double CoupledSystem<dim>::residual(const Vector &,                 \
+                                               double,                         \
+                                               Vector &,                       \
+                                               bool);                          \
+  template double CoupledSystem<dim>::external_force_norm() const;             \
+  template unsigned int CoupledSystem<dim>::solve_linear(Vector &,             \
                                                          const Vector &);
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

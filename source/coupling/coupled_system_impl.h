@@ -11,6 +11,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/quadrature_lib.h>
+
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
@@ -55,29 +56,69 @@ namespace pdfem
       make_boundary_conditions();
 
       // ----- assembly (coupled_system_assembly.cc)
-      /// FE cells and PD families: f_int (all DoFs) and, if wanted, K.
+      /// The FE-cells part of f_int, once: linear, it never changes.
       void
-      assemble_internal(const dealii::TrilinosWrappers::MPI::Vector &u_ghosted,
-                        bool assemble_tangent);
+      assemble_fe_matrix();
+      /**
+       * Add the PD internal forces of the owned families for the
+       * displacement @p x (ghosted: owned and relevant entries) to the owned
+       * entries of @p y: row k gets sum over intact bonds of
+       * (-V_k G_m + T_m)(x_m - x_k). Works on the raw local arrays.
+       */
+      void
+      apply_pd(const dealii::TrilinosWrappers::MPI::Vector &x,
+               dealii::TrilinosWrappers::MPI::Vector       &y) const;
+      /// Tractions and body force at load factor @p t, into f_ext.
       void
       assemble_external(double t);
-      /// Add a local block (rows x cols) to K with prescribed DoFs eliminated.
+      /// f_int(u) = K_FE u + PD(u), into f_int (owned).
       void
-      add_to_matrix(const std::vector<global_dof_index> &rows,
-                    const std::vector<global_dof_index> &cols,
-                    const std::vector<double>           &values);
+      compute_internal_force(const dealii::TrilinosWrappers::MPI::Vector &u);
+      /// y = K x with prescribed and decoupled DoFs eliminated, without a
+      /// global matrix (gmres with "amg fe").
+      void
+      vmult(dealii::TrilinosWrappers::MPI::Vector       &y,
+            const dealii::TrilinosWrappers::MPI::Vector &x) const;
+      /// The assembled tangent (direct solvers, "amg", "ilu").
+      void
+      assemble_tangent();
+      /// The auxiliary matrix for "amg fe": FE stiffness of every cell.
+      void
+      assemble_auxiliary();
+      /// Add a local block (rows x cols) to @p target; with @p eliminate,
+      /// rows and columns of prescribed DoFs are dropped.
+      void
+      add_to_matrix(dealii::TrilinosWrappers::SparseMatrix &target,
+                    const std::vector<global_dof_index>    &rows,
+                    const std::vector<global_dof_index>    &cols,
+                    const std::vector<double>              &values,
+                    bool eliminate = true) const;
+      /// Q1/P1 elasticity stiffness of one cell (row-major, n x n).
+      template <typename FEValuesType>
+      void
+      cell_stiffness(const FEValuesType &fv, std::vector<double> &K) const;
+      /// Diagonal entries of prescribed and decoupled DoFs in @p target.
+      void
+      add_held_diagonal(dealii::TrilinosWrappers::SparseMatrix &target) const;
+      /// List the held DoFs (prescribed, or of decoupled nodes): their local
+      /// index and diagonal entry. Call after the bond states change.
+      void
+      update_held();
+      /// The size of a held DoF's diagonal entry: E Delta^(dim-2).
+      double
+      held_diagonal(global_dof_index i) const;
 
       /**
-       * PDLSM weights of family @p o over all its members, broken or not
-       * (in member order): the shape matrix belongs to the initial family
-       * and bond states enter only the sums (PDLSM-FEM, specs/004 §1.2).
-       * Refitting over the intact bonds alone would reproduce a uniform
-       * strain across a crack exactly, so that the crack would carry load.
+       * PDLSM weights of every bond of the owned families (CSR like
+       * families.members), computed once over the whole initial family:
+       * the shape matrix belongs to it, and bond states enter only the sums
+       * (PDLSM-FEM, specs/004 §1.2). Refitting over the intact bonds alone
+       * would reproduce a uniform strain across a crack exactly, so that
+       * the crack would carry load. Returns the number of families that
+       * cannot carry the fit.
        */
-      bool
-      family_weights(std::size_t                           o,
-                     std::vector<dealii::Tensor<1, dim>>          &a,
-                     std::vector<dealii::SymmetricTensor<2, dim>> &b) const;
+      unsigned int
+      compute_weights();
 
       /// Owners without any intact bond and without FE cells: nothing ties
       /// them to the body any more, so they are held where they are.
@@ -99,42 +140,54 @@ namespace pdfem
       dealii::DoFHandler<dim>            node_dofs_handler;
 
       // ----- nodes (replicated: every rank knows every node)
-      unsigned int                                     n_nodes = 0;
-      std::vector<unsigned int>                        vertex_to_node;
-      std::vector<dealii::Point<dim>>                  x;
-      std::vector<double>                              volume;    // all cells
-      std::vector<double>                              pd_volume; // PD cells
-      std::vector<double>                              horizon;
-      std::vector<std::uint8_t>                        is_pd, is_fe;
-      std::vector<unsigned int>                        n_fe_cells;
-      std::vector<std::array<global_dof_index, dim>>   node_dof;
-      std::vector<unsigned int>                        node_of_scalar;
-      std::vector<unsigned int>                        dof_to_node;
-      std::vector<dealii::Tensor<1, dim>>              boundary_area; // s_k
-      unsigned long                                    n_pd_boundary_faces = 0;
+      unsigned int                                   n_nodes = 0;
+      std::vector<unsigned int>                      vertex_to_node;
+      std::vector<dealii::Point<dim>>                x;
+      std::vector<double>                            volume;    // all cells
+      std::vector<double>                            pd_volume; // PD cells
+      std::vector<double>                            horizon;
+      std::vector<std::uint8_t>                      is_pd, is_fe;
+      std::vector<unsigned int>                      n_fe_cells;
+      std::vector<std::array<global_dof_index, dim>> node_dof;
+      std::vector<unsigned int>                      node_of_scalar;
+      std::vector<unsigned int>                      dof_to_node;
+      std::vector<dealii::Tensor<1, dim>>            boundary_area; // s_k
+      unsigned long                                  n_pd_boundary_faces = 0;
 
       // ----- ownership and PD families
       dealii::IndexSet          owned, relevant;
       std::vector<unsigned int> owned_nodes;
-      PD::Families              families; // owners = owned PD nodes
+      PD::Families              families;  // owners = owned PD nodes
       std::vector<std::uint8_t> decoupled; // per family owner (see above)
+      /// Local index of each DoF of a node in the ghosted (relevant) vectors
+      /// and, for owned nodes, in the owned vectors.
+      std::vector<std::array<unsigned int, dim>>   relevant_lid, owned_lid;
+      std::vector<dealii::Tensor<1, dim>>          weight_a; // per bond
+      std::vector<dealii::SymmetricTensor<2, dim>> weight_b; // per bond
 
       // ----- boundary conditions
-      std::vector<std::uint8_t>   dof_fixed;   // all DoFs (replicated)
-      std::vector<int>            dof_dirichlet; // condition index or -1
+      std::vector<std::uint8_t> dof_fixed;     // all DoFs (replicated)
+      std::vector<int>          dof_dirichlet; // condition index or -1
       std::vector<std::unique_ptr<dealii::FunctionParser<3>>> dirichlet_fn;
-      std::vector<std::string>                 set_names;
-      std::vector<std::vector<unsigned int>>   set_nodes;
+      std::vector<std::string>                                set_names;
+      std::vector<std::vector<unsigned int>>                  set_nodes;
       std::vector<std::unique_ptr<dealii::FunctionParser<3>>> traction_fn;
-      std::unique_ptr<dealii::FunctionParser<3>>                body_fn;
+      std::unique_ptr<dealii::FunctionParser<3>>              body_fn;
 
       // ----- linear algebra
-      dealii::TrilinosWrappers::SparseMatrix matrix;
-      dealii::TrilinosWrappers::MPI::Vector  f_int, f_ext, u_ghosted;
-      Solvers::LinearSolver                  solver;
-      double                                 f_ext_norm = 0.;
-      std::vector<dealii::Tensor<1, dim>>    last_reactions;
-      std::size_t                            n_matrix_entries = 0;
+      std::vector<unsigned int> held_lid;   // owned-local index
+      std::vector<double>       held_value; // its diagonal entry
+      /// gmres with "amg fe": no assembled tangent, products on the fly.
+      bool                                          matrix_free = false;
+      dealii::TrilinosWrappers::SparseMatrix        fe_matrix; // FE cells, full
+      dealii::TrilinosWrappers::SparseMatrix        matrix; // assembled tangent
+      dealii::TrilinosWrappers::SparseMatrix        auxiliary; // "amg fe" only
+      mutable dealii::TrilinosWrappers::MPI::Vector x_ghosted, x_masked;
+      dealii::TrilinosWrappers::MPI::Vector         f_int, f_ext, u_ghosted;
+      Solvers::LinearSolver                         solver;
+      double                                        f_ext_norm = 0.;
+      std::vector<dealii::Tensor<1, dim>>           last_reactions;
+      std::size_t                                   n_matrix_entries = 0;
     };
   } // namespace Coupling
 } // namespace pdfem

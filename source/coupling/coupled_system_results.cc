@@ -3,6 +3,7 @@
 #include <pdfem/base/config.h>
 
 #include <deal.II/base/mpi.h>
+
 #include <deal.II/fe/fe_tools.h>
 #include <deal.II/fe/fe_values_extractors.h>
 #include <deal.II/hp/fe_values.h>
@@ -20,11 +21,12 @@ namespace pdfem
     NodalResults<dim>
     CoupledSystem<dim>::nodal_results(const Vector &u) const
     {
-      Impl &s = *impl;
-      s.u_ghosted = u;
+      Impl &s                                 = *impl;
+      s.u_ghosted                             = u;
       const TrilinosWrappers::MPI::Vector &ug = s.u_ghosted;
-      constexpr unsigned int n_stress = SymmetricTensor<2, dim>::n_independent_components;
-      const unsigned int     n        = s.n_nodes;
+      constexpr unsigned int               n_stress =
+        SymmetricTensor<2, dim>::n_independent_components;
+      const unsigned int n = s.n_nodes;
 
       // Each quantity is summed over the ranks that own its contributions.
       std::vector<double> disp(n * dim, 0.), stress(n * n_stress, 0.),
@@ -33,41 +35,37 @@ namespace pdfem
         for (unsigned int c = 0; c < dim; ++c)
           disp[k * dim + c] = ug[s.node_dof[k][c]];
 
-      auto add_stress = [&](const unsigned int              k,
+      auto add_stress = [&](const unsigned int             k,
                             const SymmetricTensor<2, dim> &sigma) {
         for (unsigned int c = 0; c < n_stress; ++c)
-          stress[k * n_stress + c] +=
-            sigma.access_raw_entry(c);
+          stress[k * n_stress + c] += sigma.access_raw_entry(c);
         count[k] += 1.;
       };
 
       // PD nodes: the nonlocal stress C : sym(sum_m mu_km (u_m - u_k) (x)
       // a_m); damage = the fraction of broken bonds.
-      std::vector<Tensor<1, dim>>          a;
-      std::vector<SymmetricTensor<2, dim>> b;
       for (std::size_t o = 0; o < s.families.owners.size(); ++o)
         {
-          const unsigned int k     = s.families.owners[o];
-          const std::size_t  first = s.families.offsets[o];
-          const std::size_t  n_all = s.families.offsets[o + 1] - first;
+          const unsigned int k        = s.families.owners[o];
+          const std::size_t  first    = s.families.offsets[o];
+          const std::size_t  last     = s.families.offsets[o + 1];
           std::size_t        n_intact = 0;
           Tensor<2, dim>     grad_u;
-          if (!s.decoupled[o])
-            s.family_weights(o, a, b);
-          for (std::size_t j = 0; j < n_all; ++j)
+          for (std::size_t j = first; j < last; ++j)
             {
-              if (!s.families.intact[first + j])
+              if (!s.families.intact[j])
                 continue;
               ++n_intact;
-              const unsigned int m = s.families.members[first + j];
+              const unsigned int m = s.families.members[j];
               for (unsigned int c = 0; c < dim; ++c)
                 {
                   const double du = ug[s.node_dof[m][c]] - ug[s.node_dof[k][c]];
                   for (unsigned int d = 0; d < dim; ++d)
-                    grad_u[c][d] += du * a[j][d];
+                    grad_u[c][d] += du * s.weight_a[j][d];
                 }
             }
-          damage[k] = n_all > 0 ? 1. - double(n_intact) / n_all : 0.;
+          damage[k] =
+            last > first ? 1. - double(n_intact) / (last - first) : 0.;
           if (!s.decoupled[o])
             add_stress(k, s.pdlsm.stress(grad_u));
         }
@@ -105,8 +103,8 @@ namespace pdfem
           for (unsigned int i = 0; i < fv.dofs_per_cell; ++i)
             u_local[i] = ug[local_dofs[i]];
           grads.resize(fv.n_quadrature_points);
-          fv[displacement].get_function_gradients_from_local_dof_values(
-            u_local, grads);
+          fv[displacement].get_function_gradients_from_local_dof_values(u_local,
+                                                                        grads);
           std::vector<SymmetricTensor<2, dim>> sigma_q(fv.n_quadrature_points);
           for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
             {
@@ -148,8 +146,9 @@ namespace pdfem
       return results;
     }
 
-#define INSTANTIATE(dim) \
-  template NodalResults<dim> CoupledSystem<dim>::nodal_results(const Vector &) const;
+#define INSTANTIATE(dim)                                                       \
+  template NodalResults<dim> CoupledSystem<dim>::nodal_results(const Vector &) \
+    const;
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace Coupling

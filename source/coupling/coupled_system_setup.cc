@@ -4,15 +4,16 @@
 #include <pdfem/base/exceptions.h>
 
 #include <deal.II/base/mpi.h>
+
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
-
-#include "coupled_system_impl.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
+
+#include "coupled_system_impl.h"
 
 namespace pdfem
 {
@@ -38,8 +39,8 @@ namespace pdfem
     template <int dim>
     CoupledSystem<dim>::Impl::Impl(
       const parallel::shared::Triangulation<dim, dim> &tria,
-      const std::vector<bool>                          &cell_is_pd,
-      const Settings<dim>                              &settings)
+      const std::vector<bool>                         &cell_is_pd,
+      const Settings<dim>                             &settings)
       : comm(tria.get_communicator())
       , tria(tria)
       , cell_pd(cell_is_pd)
@@ -154,8 +155,7 @@ namespace pdfem
 
       horizon.resize(n_nodes);
       for (unsigned int k = 0; k < n_nodes; ++k)
-        horizon[k] =
-          settings.horizon_factor * std::pow(volume[k], 1. / dim);
+        horizon[k] = settings.horizon_factor * std::pow(volume[k], 1. / dim);
 
       for (unsigned int k = 0; k < n_nodes; ++k)
         if (owned.is_element(node_dof[k][0]))
@@ -187,14 +187,12 @@ namespace pdfem
                 continue;
               ++n_pd_boundary_faces;
               face_values.reinit(cell, f);
-              const FEFaceValues<dim> &fv =
-                face_values.get_present_fe_values();
+              const FEFaceValues<dim> &fv = face_values.get_present_fe_values();
               for (const unsigned int v : cell->vertex_indices())
                 {
                   Tensor<1, dim> s;
                   for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
-                    s += fv.shape_value(v, q) * fv.normal_vector(q) *
-                         fv.JxW(q);
+                    s += fv.shape_value(v, q) * fv.normal_vector(q) * fv.JxW(q);
                   boundary_area[vertex_to_node[cell->vertex_index(v)]] += s;
                 }
             }
@@ -216,33 +214,29 @@ namespace pdfem
 
       // Every family must carry the second-order fit: if one cannot, the
       // horizon is too small for the mesh (or the weight too narrow).
-      std::vector<Tensor<1, dim>>          a;
-      std::vector<SymmetricTensor<2, dim>> b;
-      const auto fit_fails = [&](const std::size_t o) {
-        return !family_weights(o, a, b);
-      };
-      unsigned int n_bad = 0;
-      std::size_t  first_bad = 0;
-      for (std::size_t o = 0; o < families.owners.size(); ++o)
-        if (fit_fails(o) && n_bad++ == 0)
-          first_bad = o;
+      const unsigned int n_bad       = compute_weights();
       const unsigned int n_bad_total = Utilities::MPI::sum(n_bad, comm);
       if (n_bad_total > 0)
         {
           std::ostringstream where;
-          if (n_bad > 0)
-            where << " (e.g. the node at (" << x[families.owners[first_bad]]
-                  << ") with "
-                  << families.offsets[first_bad + 1] - families.offsets[first_bad]
-                  << " members)";
+          for (std::size_t o = 0; o < families.owners.size() && n_bad > 0; ++o)
+            if (families.offsets[o + 1] > families.offsets[o] &&
+                weight_b[families.offsets[o]].norm() == 0.)
+              {
+                where << " (e.g. the node at (" << x[families.owners[o]]
+                      << ") with "
+                      << families.offsets[o + 1] - families.offsets[o]
+                      << " members)";
+                break;
+              }
           throw InputError(
             settings.source_file,
             "Peridynamics/Horizon factor",
             std::to_string(n_bad_total) +
               " PD node(s) have too few effective family members for the "
               "second-order PDLSM fit with m = " +
-              number(settings.horizon_factor) + ", a = " +
-              number(settings.weight_factor) + where.str(),
+              number(settings.horizon_factor) +
+              ", a = " + number(settings.weight_factor) + where.str(),
             "a larger Horizon factor or Weight factor (m >= 3 with a >= "
             "0.25 is safe on quads and hexes)");
         }
@@ -250,8 +244,7 @@ namespace pdfem
       // Bonds crossing a pre-existing crack are cut for good.
       if (!settings.cracks.empty())
         for (std::size_t o = 0; o < families.owners.size(); ++o)
-          for (std::size_t b = families.offsets[o];
-               b < families.offsets[o + 1];
+          for (std::size_t b = families.offsets[o]; b < families.offsets[o + 1];
                ++b)
             if (Mesh::cut_by_any(settings.cracks,
                                  x[families.owners[o]],
@@ -275,27 +268,55 @@ namespace pdfem
       extra.erase(std::unique(extra.begin(), extra.end()), extra.end());
       relevant.add_indices(extra.begin(), extra.end());
       relevant.compress();
+
+      // Local positions in the vectors' Epetra maps (which list the index
+      // sets in increasing order), so that the PD kernel reads raw arrays.
+      constexpr auto invalid = numbers::invalid_unsigned_int;
+      relevant_lid.assign(n_nodes, {});
+      owned_lid.assign(n_nodes, {});
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            const auto dof     = node_dof[k][c];
+            relevant_lid[k][c] = relevant.is_element(dof) ?
+                                   relevant.index_within_set(dof) :
+                                   invalid;
+            owned_lid[k][c] =
+              owned.is_element(dof) ? owned.index_within_set(dof) : invalid;
+          }
     }
 
     template <int dim>
-    bool
-    CoupledSystem<dim>::Impl::family_weights(
-      const std::size_t                     o,
-      std::vector<Tensor<1, dim>>          &a,
-      std::vector<SymmetricTensor<2, dim>> &b) const
+    unsigned int
+    CoupledSystem<dim>::Impl::compute_weights()
     {
-      static thread_local std::vector<Tensor<1, dim>> xi;
-      static thread_local std::vector<double>         vol;
-      const unsigned int                              k = families.owners[o];
-      xi.clear();
-      vol.clear();
-      for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
-           ++j)
+      weight_a.assign(families.n_bonds(), Tensor<1, dim>());
+      weight_b.assign(families.n_bonds(), SymmetricTensor<2, dim>());
+      std::vector<Tensor<1, dim>>          xi, a;
+      std::vector<double>                  vol;
+      std::vector<SymmetricTensor<2, dim>> b;
+      unsigned int                         n_failed = 0;
+      for (std::size_t o = 0; o < families.owners.size(); ++o)
         {
-          xi.push_back(x[families.members[j]] - x[k]);
-          vol.push_back(volume[families.members[j]]);
+          const unsigned int k     = families.owners[o];
+          const std::size_t  first = families.offsets[o];
+          const std::size_t  last  = families.offsets[o + 1];
+          xi.clear();
+          vol.clear();
+          for (std::size_t j = first; j < last; ++j)
+            {
+              xi.push_back(x[families.members[j]] - x[k]);
+              vol.push_back(volume[families.members[j]]);
+            }
+          if (!pdlsm.compute_weights(xi, vol, horizon[k], a, b))
+            {
+              ++n_failed; // its weights stay zero
+              continue;
+            }
+          std::copy(a.begin(), a.end(), weight_a.begin() + first);
+          std::copy(b.begin(), b.end(), weight_b.begin() + first);
         }
-      return pdlsm.compute_weights(xi, vol, horizon[k], a, b);
+      return n_failed;
     }
 
     template <int dim>
@@ -315,47 +336,78 @@ namespace pdfem
     void
     CoupledSystem<dim>::Impl::make_sparsity()
     {
-      TrilinosWrappers::SparsityPattern    sp(owned, owned, relevant, comm);
+      matrix_free = settings.linear_solver.type == "gmres" &&
+                    settings.linear_solver.preconditioner == "amg fe";
+
+      // Cell patterns: FE cells only (f_int, tangent), or every cell ("amg
+      // fe"); every owned row has its diagonal (held DoFs).
       std::vector<types::global_dof_index> local;
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned() && !cell_pd[cell->active_cell_index()])
-          {
-            local.resize(cell->get_fe().n_dofs_per_cell());
-            cell->get_dof_indices(local);
-            std::vector<types::global_dof_index> sorted(local);
-            std::sort(sorted.begin(), sorted.end());
-            for (const auto row : local)
-              sp.add_entries(row, sorted.begin(), sorted.end(), true);
-          }
-      std::vector<types::global_dof_index> cols;
-      for (std::size_t o = 0; o < families.owners.size(); ++o)
+      auto add_cells = [&](TrilinosWrappers::SparsityPattern &sp,
+                           const bool                         all_cells) {
+        for (const auto &cell : dofs.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              (all_cells || !cell_pd[cell->active_cell_index()]))
+            {
+              local.resize(cell->get_fe().n_dofs_per_cell());
+              cell->get_dof_indices(local);
+              std::sort(local.begin(), local.end());
+              for (const auto row : local)
+                sp.add_entries(row, local.begin(), local.end(), true);
+            }
+        for (const auto i : owned)
+          sp.add(i, i);
+      };
+
+      {
+        TrilinosWrappers::SparsityPattern sp(owned, owned, relevant, comm);
+        add_cells(sp, false);
+        sp.compress();
+        fe_matrix.reinit(sp);
+      }
+      if (matrix_free)
         {
-          const unsigned int k = families.owners[o];
-          cols.clear();
-          for (unsigned int c = 0; c < dim; ++c)
-            cols.push_back(node_dof[k][c]);
-          for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
-               ++j)
-            for (unsigned int c = 0; c < dim; ++c)
-              cols.push_back(node_dof[families.members[j]][c]);
-          std::sort(cols.begin(), cols.end());
-          for (unsigned int c = 0; c < dim; ++c)
-            sp.add_entries(node_dof[k][c], cols.begin(), cols.end(), true);
+          TrilinosWrappers::SparsityPattern sp(owned, owned, relevant, comm);
+          add_cells(sp, true);
+          sp.compress();
+          auxiliary.reinit(sp);
+          n_matrix_entries = 0;
         }
-      // Every owned row gets its diagonal (prescribed or decoupled DoFs).
-      for (const auto i : owned)
-        sp.add(i, i);
-      sp.compress();
-      matrix.reinit(sp);
-      n_matrix_entries = matrix.n_nonzero_elements();
+      else
+        {
+          // The coupled tangent: FE cells plus each PD row with its family.
+          TrilinosWrappers::SparsityPattern sp(owned, owned, relevant, comm);
+          add_cells(sp, false);
+          std::vector<types::global_dof_index> cols;
+          for (std::size_t o = 0; o < families.owners.size(); ++o)
+            {
+              const unsigned int k = families.owners[o];
+              cols.clear();
+              for (unsigned int c = 0; c < dim; ++c)
+                cols.push_back(node_dof[k][c]);
+              for (std::size_t j = families.offsets[o];
+                   j < families.offsets[o + 1];
+                   ++j)
+                for (unsigned int c = 0; c < dim; ++c)
+                  cols.push_back(node_dof[families.members[j]][c]);
+              std::sort(cols.begin(), cols.end());
+              for (unsigned int c = 0; c < dim; ++c)
+                sp.add_entries(node_dof[k][c], cols.begin(), cols.end(), true);
+            }
+          sp.compress();
+          matrix.reinit(sp);
+          n_matrix_entries = matrix.n_nonzero_elements();
+        }
 
       f_int.reinit(owned, relevant, comm, true);
       f_ext.reinit(owned, relevant, comm, true);
       u_ghosted.reinit(owned, relevant, comm);
+      x_ghosted.reinit(owned, relevant, comm);
+      x_masked.reinit(owned, comm);
 
       // Constant (translation) modes over the owned DoFs, for AMG.
-      std::vector<std::vector<bool>> modes(
-        dim, std::vector<bool>(owned.n_elements(), false));
+      std::vector<std::vector<bool>> modes(dim,
+                                           std::vector<bool>(owned.n_elements(),
+                                                             false));
       for (unsigned int i = 0; i < owned.n_elements(); ++i)
         {
           const auto dof = owned.nth_index_in_set(i);
@@ -399,8 +451,7 @@ namespace pdfem
               throw InputError(settings.source_file,
                                "Boundary conditions/Dirichlet",
                                "no mesh node at the point " + bc.name +
-                                 " (the nearest is " + number(best) +
-                                 " away)",
+                                 " (the nearest is " + number(best) + " away)",
                                "a boundary name, or a point that is a mesh "
                                "node");
             nodes.push_back(node);
@@ -452,8 +503,8 @@ namespace pdfem
     template <int dim>
     CoupledSystem<dim>::CoupledSystem(
       const parallel::shared::Triangulation<dim, dim> &tria,
-      const std::vector<bool>                          &cell_is_pd,
-      const Settings<dim>                              &settings)
+      const std::vector<bool>                         &cell_is_pd,
+      const Settings<dim>                             &settings)
       : impl(std::make_unique<Impl>(tria, cell_is_pd, settings))
     {
       impl->make_fe_and_dofs();
@@ -462,6 +513,10 @@ namespace pdfem
       impl->make_pd_boundary();
       impl->make_families();
       impl->make_sparsity();
+      impl->update_held();
+      impl->assemble_fe_matrix();
+      if (impl->matrix_free)
+        impl->assemble_auxiliary();
     }
 
     template <int dim>
@@ -491,8 +546,8 @@ namespace pdfem
         p.n_pd_cells += pd;
       p.n_dofs              = s.dofs.n_dofs();
       p.n_pd_boundary_faces = s.n_pd_boundary_faces;
-      p.n_bonds = Utilities::MPI::sum<unsigned long>(s.families.n_bonds(),
-                                                     s.comm);
+      p.n_bonds =
+        Utilities::MPI::sum<unsigned long>(s.families.n_bonds(), s.comm);
       p.n_broken_bonds =
         Utilities::MPI::sum<unsigned long>(s.families.n_broken(), s.comm);
       unsigned long n_decoupled = 0;

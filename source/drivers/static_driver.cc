@@ -69,8 +69,8 @@ namespace pdfem
               if (it == settings.max_iterations)
                 {
                   std::ostringstream s;
-                  s << "no equilibrium at load step " << step << " after "
-                    << it << " iterations (relative residual "
+                  s << "no equilibrium at load step " << step << " after " << it
+                    << " iterations (relative residual "
                     << record.relative_residual << ")";
                   throw RunFailure("diverged", s.str());
                 }
@@ -87,8 +87,8 @@ namespace pdfem
               const double elapsed = seconds_since(run_start);
               const double left    = elapsed / step * (n_steps - step);
               *progress << "Step " << std::setw(4) << step << "/" << n_steps
-                        << "  t = " << std::setw(8) << std::setprecision(4)
-                        << t << "  iterations " << record.newton_iterations
+                        << "  t = " << std::setw(8) << std::setprecision(4) << t
+                        << "  iterations " << record.newton_iterations
                         << "  |r|/|f| = " << std::scientific
                         << std::setprecision(2) << record.relative_residual
                         << std::defaultfloat << "  left ~"

@@ -3,6 +3,7 @@
 #include <pdfem/io/field_output.h>
 
 #include <deal.II/base/mpi.h>
+
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/hp/mapping_collection.h>
 #include <deal.II/lac/vector.h>
@@ -80,9 +81,8 @@ namespace pdfem
           scalar_cell->get_dof_indices(scalar_local);
           for (const unsigned int v : cell->vertex_indices())
             for (unsigned int c = 0; c < dim; ++c)
-              displacement[cell->vertex_dof_index(v,
-                                                  c,
-                                                  cell->active_fe_index())] =
+              displacement[cell->vertex_dof_index(
+                v, c, cell->active_fe_index())] =
                 results.displacement[node_of[scalar_local[v]]][c];
           ++scalar_cell;
         }
@@ -98,12 +98,11 @@ namespace pdfem
           const SymmetricTensor<2, dim> &sigma = results.stress[k];
           for (unsigned int c = 0; c < names.size(); ++c)
             stress[c][i] = stress_component(sigma, c);
-          const auto ev = eigenvalues(sigma);
-          s1[i]         = ev[0];
-          s_min[i]      = ev[dim - 1];
-          const double szz =
-            dim == 2 && plane_strain ? nu * trace(sigma) : 0.;
-          sigma_zz[i] = szz;
+          const auto ev    = eigenvalues(sigma);
+          s1[i]            = ev[0];
+          s_min[i]         = ev[dim - 1];
+          const double szz = dim == 2 && plane_strain ? nu * trace(sigma) : 0.;
+          sigma_zz[i]      = szz;
           // von Mises from the full 3x3 stress.
           SymmetricTensor<2, 3> s3;
           for (unsigned int a = 0; a < dim; ++a)
@@ -116,8 +115,8 @@ namespace pdfem
           kind[i]      = results.kind[k];
         }
 
-      const auto    &tria = vector_dofs.get_triangulation();
-      Vector<float>  region(tria.n_active_cells()), material(region.size()),
+      const auto   &tria = vector_dofs.get_triangulation();
+      Vector<float> region(tria.n_active_cells()), material(region.size()),
         rank(region.size());
       for (const auto &cell : tria.active_cell_iterators())
         {
@@ -152,7 +151,7 @@ namespace pdfem
       data_out.add_data_vector(rank, "rank", DataOut<dim>::type_cell_data);
       data_out.build_patches(system.mapping(), 1);
 
-      const MPI_Comm comm = vector_dofs.get_communicator();
+      const MPI_Comm    comm = vector_dofs.get_communicator();
       const std::string pvtu = data_out.write_vtu_with_pvtu_record(
         directory + "/", "solution", counter++, comm, 5);
       records.emplace_back(time, pvtu);
@@ -170,12 +169,14 @@ namespace pdfem
     {
       std::vector<unsigned int> order(r.position.size());
       std::iota(order.begin(), order.end(), 0u);
-      std::sort(order.begin(), order.end(), [&](unsigned int a, unsigned int b) {
-        for (int d = dim - 1; d >= 0; --d)
-          if (r.position[a][d] != r.position[b][d])
-            return r.position[a][d] < r.position[b][d];
-        return a < b;
-      });
+      std::sort(order.begin(),
+                order.end(),
+                [&](unsigned int a, unsigned int b) {
+                  for (int d = dim - 1; d >= 0; --d)
+                    if (r.position[a][d] != r.position[b][d])
+                      return r.position[a][d] < r.position[b][d];
+                  return a < b;
+                });
       std::ofstream out(file);
       const char   *axis = "xyz";
       for (unsigned int d = 0; d < dim; ++d)

@@ -41,8 +41,7 @@ namespace pdfem
     {
       std::string s;
       for (const char c : name)
-        if (std::isalnum(static_cast<unsigned char>(c)) || c == '.' ||
-            c == '-')
+        if (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-')
           s += c;
         else if (!s.empty() && s.back() != '_')
           s += '_';

@@ -65,8 +65,7 @@ namespace pdfem
           {
             throw InputError(file,
                              parameter,
-                             "cannot parse the expression '" + expression +
-                               "'",
+                             "cannot parse the expression '" + expression + "'",
                              "a muparser expression of x, y, z and t");
           }
       }
@@ -97,9 +96,10 @@ namespace pdfem
                                "cannot read '" + item + "'",
                                form);
             BoundaryEntry entry;
-            entry.boundary         = trim(item.substr(0, colon));
-            const std::string comp = trim(item.substr(colon + 1, equal - colon - 1));
-            entry.expression       = trim(item.substr(equal + 1));
+            entry.boundary = trim(item.substr(0, colon));
+            const std::string comp =
+              trim(item.substr(colon + 1, equal - colon - 1));
+            entry.expression = trim(item.substr(equal + 1));
             if (comp == "x")
               entry.component = 0;
             else if (comp == "y")
@@ -169,9 +169,8 @@ namespace pdfem
       {
         const std::string key = "Additional information:";
         auto              pos = what.find(key);
-        std::string       msg = pos == std::string::npos ?
-                                  what :
-                                  what.substr(pos + key.size());
+        std::string       msg =
+          pos == std::string::npos ? what : what.substr(pos + key.size());
         msg = std::regex_replace(msg, std::regex("-{5,}"), "");
         msg = std::regex_replace(msg, std::regex("\\s+"), " ");
         return trim(msg);
@@ -276,21 +275,20 @@ namespace pdfem
       if (!(youngs_modulus > 0.))
         throw InputError(file,
                          "Material/Young's modulus",
-                         "E = " + number(youngs_modulus) +
-                           " is not positive",
+                         "E = " + number(youngs_modulus) + " is not positive",
                          "E > 0");
       const bool plane_stress = dim == 2 && plane == PlaneModel::plane_stress;
-      const bool nu_ok        = poissons_ratio > -1. &&
-                         (plane_stress ? poissons_ratio <= 0.5 :
-                                         poissons_ratio < 0.5);
+      const bool nu_ok =
+        poissons_ratio > -1. &&
+        (plane_stress ? poissons_ratio <= 0.5 : poissons_ratio < 0.5);
       if (!nu_ok)
         throw InputError(file,
                          "Material/Poisson's ratio",
                          "nu = " + number(poissons_ratio) +
                            " is out of range for " +
-                           (dim == 3 ? std::string("3D") :
-                                       plane_stress ? "plane stress" :
-                                                      "plane strain"),
+                           (dim == 3     ? std::string("3D") :
+                            plane_stress ? "plane stress" :
+                                           "plane strain"),
                          plane_stress ? "-1 < nu <= 0.5" : "-1 < nu < 0.5");
       if (density < 0.)
         throw InputError(file,
@@ -342,15 +340,13 @@ namespace pdfem
     }
 
     void
-    Peridynamics::parse(ParameterHandler  &prm,
-                        const std::string &file,
-                        int                dim)
+    Peridynamics::parse(ParameterHandler &prm, const std::string &file, int dim)
     {
       prm.enter_subsection("Peridynamics");
-      model                = prm.get("Model");
-      horizon_factor       = prm.get_double("Horizon factor");
-      weight_factor        = prm.get_double("Weight factor");
-      fe_nodes_in_families = prm.get("Family members") == "all nodes";
+      model                        = prm.get("Model");
+      horizon_factor               = prm.get_double("Horizon factor");
+      weight_factor                = prm.get_double("Weight factor");
+      fe_nodes_in_families         = prm.get("Family members") == "all nodes";
       const std::string crack_text = prm.get("Pre-existing cracks");
       prm.leave_subsection();
 
@@ -364,8 +360,7 @@ namespace pdfem
       if (!(weight_factor > 0.))
         throw InputError(file,
                          "Peridynamics/Weight factor",
-                         "a = " + number(weight_factor) +
-                           " is not positive",
+                         "a = " + number(weight_factor) + " is not positive",
                          "a > 0");
       cracks.clear();
       const std::string parameter = "Peridynamics/Pre-existing cracks";
@@ -426,9 +421,12 @@ namespace pdfem
                               int                dim)
     {
       prm.enter_subsection("Boundary conditions");
-      dirichlet = parse_boundary_entries(
-        prm.get("Dirichlet"), file, "Boundary conditions/Dirichlet", dim, false);
-      traction = parse_boundary_entries(
+      dirichlet = parse_boundary_entries(prm.get("Dirichlet"),
+                                         file,
+                                         "Boundary conditions/Dirichlet",
+                                         dim,
+                                         false);
+      traction  = parse_boundary_entries(
         prm.get("Traction"), file, "Boundary conditions/Traction", dim, true);
       body_force = split(prm.get("Body force"), ';');
       prm.leave_subsection();
@@ -459,9 +457,13 @@ namespace pdfem
                         "Amesos package for 'direct': mumps (parallel) or "
                         "klu (serial, gathers on rank 0).");
       prm.declare_entry("Preconditioner",
-                        "amg",
-                        Selection("amg|ilu"),
-                        "For gmres: amg (Trilinos ML) or ilu (Ifpack ILU(1)).");
+                        "amg fe",
+                        Selection("amg fe|amg|ilu"),
+                        "For gmres: 'amg fe' (Trilinos ML algebraic multigrid "
+                        "built from the local Q1/P1 stiffness of every cell, "
+                        "PD cells included: the same elasticity operator with "
+                        "a far sparser stencil), 'amg' (ML built from the "
+                        "coupled matrix itself) or 'ilu' (Ifpack ILU(1)).");
       prm.declare_entry("Tolerance",
                         "1e-10",
                         Double(0.),
@@ -581,7 +583,7 @@ namespace pdfem
 
     void
     Scene::read(
-      const std::string                                       &parameter_file,
+      const std::string                                      &parameter_file,
       const std::vector<std::pair<std::string, std::string>> &overrides)
     {
       namespace fs = std::filesystem;

@@ -39,8 +39,7 @@ namespace pdfem
         if (std::abs(denom) <= eps)
           {
             // Parallel: they meet only if collinear and overlapping.
-            if (std::abs(cross2(ca, r)) > 1e-12 * r.norm() * ca.norm() +
-                                            1e-300)
+            if (std::abs(cross2(ca, r)) > 1e-12 * r.norm() * ca.norm() + 1e-300)
               return false;
             const double rr = r * r;
             const double t0 = (ca * r) / rr;
@@ -132,12 +131,12 @@ namespace pdfem
       return false;
     }
 
-#define INSTANTIATE(dim)                                                   \
-  template struct Crack<dim>;                                              \
-  template std::vector<Crack<dim>> make_cracks<dim>(                       \
-    const std::vector<std::vector<std::array<double, 3>>> &);              \
-  template bool cut_by_any<dim>(const std::vector<Crack<dim>> &,           \
-                                const Point<dim> &,                        \
+#define INSTANTIATE(dim)                                         \
+  template struct Crack<dim>;                                    \
+  template std::vector<Crack<dim>> make_cracks<dim>(             \
+    const std::vector<std::vector<std::array<double, 3>>> &);    \
+  template bool cut_by_any<dim>(const std::vector<Crack<dim>> &, \
+                                const Point<dim> &,              \
                                 const Point<dim> &);
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

@@ -85,11 +85,10 @@ namespace pdfem
         (fs::path(work_dir) / (fs::path(input).stem().string() + ".msh"))
           .string();
       const std::string log = msh + ".log";
-      const std::string command = "gmsh -" + std::to_string(dim) +
-                                  " -format msh4 -v 2 -clscale " +
-                                  number(size_factor) + " \"" + input +
-                                  "\" -o \"" +
-                                  msh + "\" > \"" + log + "\" 2>&1";
+      const std::string command =
+        "gmsh -" + std::to_string(dim) + " -format msh4 -v 2 -clscale " +
+        number(size_factor) + " \"" + input + "\" -o \"" + msh + "\" > \"" +
+        log + "\" 2>&1";
       if (std::system(command.c_str()) != 0 || !fs::exists(msh))
         {
           std::ifstream     l(log);
@@ -113,7 +112,7 @@ namespace pdfem
       grid_in.read_msh(in);
     }
 
-#define INSTANTIATE(dim) \
+#define INSTANTIATE(dim)                           \
   template void read_msh<dim>(const std::string &, \
                               dealii::Triangulation<dim, dim> &);
     PDFEM_INSTANTIATE(INSTANTIATE)

@@ -70,12 +70,13 @@ namespace pdfem
 
       std::array<long, dim> n_cells;
       for (unsigned int d = 0; d < dim; ++d)
-        n_cells[d] = std::max(1L, static_cast<long>((hi[d] - lo[d]) / cell) + 1);
+        n_cells[d] =
+          std::max(1L, static_cast<long>((hi[d] - lo[d]) / cell) + 1);
       auto cell_of = [&](const Point<dim> &p) {
         std::array<long, dim> c;
         for (unsigned int d = 0; d < dim; ++d)
-          c[d] = std::min(n_cells[d] - 1,
-                          static_cast<long>((p[d] - lo[d]) / cell));
+          c[d] =
+            std::min(n_cells[d] - 1, static_cast<long>((p[d] - lo[d]) / cell));
         return c;
       };
       auto linear = [&](const std::array<long, dim> &c) {
@@ -164,15 +165,15 @@ namespace pdfem
       return families;
     }
 
-#define INSTANTIATE(dim)                                                     \
-  template Families find_families<dim>(const std::vector<Point<dim>> &,      \
-                                       const std::vector<double> &,          \
-                                       const std::vector<unsigned int> &,    \
-                                       const std::vector<std::uint8_t> &);   \
-  template Families find_families_brute_force<dim>(                          \
-    const std::vector<Point<dim>> &,                                         \
-    const std::vector<double> &,                                             \
-    const std::vector<unsigned int> &,                                       \
+#define INSTANTIATE(dim)                                                   \
+  template Families find_families<dim>(const std::vector<Point<dim>> &,    \
+                                       const std::vector<double> &,        \
+                                       const std::vector<unsigned int> &,  \
+                                       const std::vector<std::uint8_t> &); \
+  template Families find_families_brute_force<dim>(                        \
+    const std::vector<Point<dim>> &,                                       \
+    const std::vector<double> &,                                           \
+    const std::vector<unsigned int> &,                                     \
     const std::vector<std::uint8_t> &);
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

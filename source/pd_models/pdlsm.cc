@@ -48,7 +48,7 @@ namespace pdfem
               std::array<std::array<double, n>, n> &R,
               const double                          relative_tolerance)
       {
-        auto   a          = [&](std::size_t i, std::size_t j) -> double & {
+        auto a = [&](std::size_t i, std::size_t j) -> double & {
           return A[j * m + i];
         };
         double max_column = 0.;
@@ -61,7 +61,7 @@ namespace pdfem
           }
         if (!(max_column > 0.))
           return false;
-        std::vector<double> v(m * n, 0.); // Householder vectors
+        std::vector<double>   v(m * n, 0.); // Householder vectors
         std::array<double, n> beta{};
         for (std::size_t k = 0; k < n; ++k)
           {
@@ -71,7 +71,7 @@ namespace pdfem
             norm = std::sqrt(norm);
             if (!(norm > relative_tolerance * max_column))
               return false;
-            const double alpha = a(k, k) > 0. ? -norm : norm;
+            const double alpha  = a(k, k) > 0. ? -norm : norm;
             double       vnorm2 = 0.;
             for (std::size_t i = k; i < m; ++i)
               {
@@ -121,13 +121,13 @@ namespace pdfem
 
     template <int dim>
     bool
-    PDLSM<dim>::compute_weights(const std::vector<Tensor<1, dim>> &xi,
-                                const std::vector<double>         &volume,
-                                const double                       delta,
-                                std::vector<Tensor<1, dim>>       &a,
+    PDLSM<dim>::compute_weights(const std::vector<Tensor<1, dim>>    &xi,
+                                const std::vector<double>            &volume,
+                                const double                          delta,
+                                std::vector<Tensor<1, dim>>          &a,
                                 std::vector<SymmetricTensor<2, dim>> &b) const
     {
-      constexpr std::size_t n = n_coefficients;
+      constexpr std::size_t n       = n_coefficients;
       const std::size_t     n_bonds = xi.size();
       a.resize(n_bonds);
       b.resize(n_bonds);
@@ -142,9 +142,9 @@ namespace pdfem
       // equations keeps the error at cond(R) eps rather than cond(R)^2 eps,
       // which matters for one-sided families at corners, where the Gaussian
       // weights span many orders of magnitude.
-      const double        inv_delta = 1. / delta;
-      const double        inv_a2    = 1. / (weight_factor * weight_factor);
-      std::vector<double> A(n_bonds * n), sqrt_w(n_bonds);
+      const double          inv_delta = 1. / delta;
+      const double          inv_a2    = 1. / (weight_factor * weight_factor);
+      std::vector<double>   A(n_bonds * n), sqrt_w(n_bonds);
       std::array<double, n> p;
       for (std::size_t m = 0; m < n_bonds; ++m)
         {

@@ -12,6 +12,7 @@
 #include <pdfem/scene/scene.h>
 
 #include <deal.II/base/mpi.h>
+
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -23,6 +24,8 @@
 #include <limits>
 #include <map>
 #include <set>
+
+#include <sys/resource.h>
 
 namespace pdfem
 {
@@ -60,8 +63,7 @@ namespace pdfem
             tag = it->second;
             return true;
           }
-        if (!name.empty() &&
-            std::all_of(name.begin(), name.end(), [](char c) {
+        if (!name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
               return std::isdigit(static_cast<unsigned char>(c));
             }))
           {
@@ -74,7 +76,7 @@ namespace pdfem
       template <int dim>
       std::vector<Coupling::BoundaryCondition<dim>>
       resolve_conditions(const std::vector<Parameters::BoundaryEntry> &entries,
-                         const Mesh::PhysicalNames                   &names,
+                         const Mesh::PhysicalNames                    &names,
                          const std::set<unsigned int> &boundary_ids_in_mesh,
                          const std::string            &file,
                          const std::string            &parameter,
@@ -132,8 +134,7 @@ namespace pdfem
                     "the mesh has no boundary named '" + e.boundary + "'",
                     "boundaries of the mesh: " +
                       Mesh::PhysicalNames::list(names.boundaries) +
-                      (allow_points ? ", or a node given as (x, y[, z])" :
-                                      ""));
+                      (allow_points ? ", or a node given as (x, y[, z])" : ""));
                 bc.boundary_ids = {tag};
               }
             result.push_back(bc);
@@ -153,8 +154,9 @@ namespace pdfem
       std::vector<std::string>
       stress_component_names()
       {
-        return dim == 2 ? std::vector<std::string>{"xx", "yy", "xy"} :
-                          std::vector<std::string>{"xx", "yy", "zz", "xy", "yz", "xz"};
+        return dim == 2 ?
+                 std::vector<std::string>{"xx", "yy", "xy"} :
+                 std::vector<std::string>{"xx", "yy", "zz", "xy", "yz", "xz"};
       }
 
       template <int dim>
@@ -173,9 +175,10 @@ namespace pdfem
                 const RunOptions        &options,
                 MPI_Comm                 comm)
       {
-        const auto   total_start = clock::now();
-        const bool   root        = Utilities::MPI::this_mpi_process(comm) == 0;
-        std::ostream *progress   = (root && !options.quiet) ? &std::cout : nullptr;
+        const auto    total_start = clock::now();
+        const bool    root        = Utilities::MPI::this_mpi_process(comm) == 0;
+        std::ostream *progress =
+          (root && !options.quiet) ? &std::cout : nullptr;
         std::map<std::string, double> timings;
 
         // ---- output folder
@@ -199,20 +202,18 @@ namespace pdfem
 
         // ---- mesh (gmsh runs on rank 0 only)
         auto              start = clock::now();
-        const std::string input =
-          resolve(prm.mesh.input_file, prm.base_dir);
-        std::string msh;
-        std::string mesh_error;
+        const std::string input = resolve(prm.mesh.input_file, prm.base_dir);
+        std::string       msh;
+        std::string       mesh_error;
         if (root)
           try
             {
-              msh = Mesh::prepare_msh_file(
-                input,
-                dim,
-                prm.mesh.size_factor,
-                out_dir,
-                prm.file,
-                "Mesh/Input file");
+              msh = Mesh::prepare_msh_file(input,
+                                           dim,
+                                           prm.mesh.size_factor,
+                                           out_dir,
+                                           prm.file,
+                                           "Mesh/Input file");
             }
           catch (const InputError &e)
             {
@@ -256,9 +257,9 @@ namespace pdfem
         const auto       &regions = prm.mesh.pd_regions;
         const bool        all_pd =
           std::find(regions.begin(), regions.end(), "all") != regions.end();
-        const bool no_pd = regions.empty() ||
-                           std::find(regions.begin(), regions.end(), "none") !=
-                             regions.end();
+        const bool no_pd =
+          regions.empty() ||
+          std::find(regions.begin(), regions.end(), "none") != regions.end();
         std::set<unsigned int> pd_ids;
         if (!all_pd && !no_pd)
           for (const auto &r : regions)
@@ -276,7 +277,8 @@ namespace pdfem
         unsigned int n_pd_cells = 0;
         for (const auto &cell : tria.active_cell_iterators())
           {
-            const bool pd = !no_pd && (all_pd || pd_ids.count(cell->material_id()));
+            const bool pd =
+              !no_pd && (all_pd || pd_ids.count(cell->material_id()));
             cell_is_pd[cell->active_cell_index()] = pd;
             n_pd_cells += pd;
           }
@@ -289,32 +291,32 @@ namespace pdfem
 
         // ---- boundary conditions against the mesh
         Coupling::Settings<dim> settings;
-        settings.source_file                 = prm.file;
-        settings.material.youngs_modulus     = prm.material.youngs_modulus;
-        settings.material.poissons_ratio     = prm.material.poissons_ratio;
-        settings.material.density            = prm.material.density;
+        settings.source_file             = prm.file;
+        settings.material.youngs_modulus = prm.material.youngs_modulus;
+        settings.material.poissons_ratio = prm.material.poissons_ratio;
+        settings.material.density        = prm.material.density;
         settings.material.plane_stress =
-          dim == 2 && prm.material.plane == Parameters::PlaneModel::plane_stress;
-        settings.material.thickness = prm.material.thickness;
-        settings.horizon_factor     = prm.peridynamics.horizon_factor;
-        settings.weight_factor      = prm.peridynamics.weight_factor;
-        settings.fe_nodes_in_families =
-          prm.peridynamics.fe_nodes_in_families;
+          dim == 2 &&
+          prm.material.plane == Parameters::PlaneModel::plane_stress;
+        settings.material.thickness   = prm.material.thickness;
+        settings.horizon_factor       = prm.peridynamics.horizon_factor;
+        settings.weight_factor        = prm.peridynamics.weight_factor;
+        settings.fe_nodes_in_families = prm.peridynamics.fe_nodes_in_families;
         settings.cracks = Mesh::make_cracks<dim>(prm.peridynamics.cracks);
-        settings.dirichlet = resolve_conditions<dim>(
-          prm.boundary_conditions.dirichlet,
-          names,
-          boundary_ids,
-          prm.file,
-          "Boundary conditions/Dirichlet",
-          true);
-        settings.traction = resolve_conditions<dim>(
-          prm.boundary_conditions.traction,
-          names,
-          boundary_ids,
-          prm.file,
-          "Boundary conditions/Traction",
-          false);
+        settings.dirichlet =
+          resolve_conditions<dim>(prm.boundary_conditions.dirichlet,
+                                  names,
+                                  boundary_ids,
+                                  prm.file,
+                                  "Boundary conditions/Dirichlet",
+                                  true);
+        settings.traction =
+          resolve_conditions<dim>(prm.boundary_conditions.traction,
+                                  names,
+                                  boundary_ids,
+                                  prm.file,
+                                  "Boundary conditions/Traction",
+                                  false);
         settings.body_force    = prm.boundary_conditions.body_force;
         settings.linear_solver = prm.linear_solver;
 
@@ -324,23 +326,23 @@ namespace pdfem
         if (progress)
           *progress << "pdfem " << PDFEM_VERSION << ": " << prm.file << "\n"
                     << "  " << dim << "D, " << size.n_cells << " cells ("
-                    << size.n_pd_cells << " PD), " << size.n_nodes
-                    << " nodes (" << size.n_pd_nodes << " PD, "
-                    << size.n_interface_nodes << " interface), "
-                    << size.n_dofs << " DoFs, " << size.n_bonds
-                    << " bonds, " << Utilities::MPI::n_mpi_processes(comm)
-                    << " rank(s)" << std::endl;
+                    << size.n_pd_cells << " PD), " << size.n_nodes << " nodes ("
+                    << size.n_pd_nodes << " PD, " << size.n_interface_nodes
+                    << " interface), " << size.n_dofs << " DoFs, "
+                    << size.n_bonds << " bonds, "
+                    << Utilities::MPI::n_mpi_processes(comm) << " rank(s)"
+                    << std::endl;
 
         // ---- history
-        const auto reaction_sets = system.reaction_names();
-        std::vector<std::string> columns = {"step",
-                                            "time",
-                                            "load_factor",
-                                            "newton_iterations",
-                                            "linear_iterations",
-                                            "residual",
-                                            "n_broken_bonds",
-                                            "max_damage"};
+        const auto               reaction_sets = system.reaction_names();
+        std::vector<std::string> columns       = {"step",
+                                                  "time",
+                                                  "load_factor",
+                                                  "newton_iterations",
+                                                  "linear_iterations",
+                                                  "residual",
+                                                  "n_broken_bonds",
+                                                  "max_damage"};
         for (const auto &set : reaction_sets)
           for (const auto &c : component_names<dim>())
             columns.push_back("reaction_" + IO::History::column_name(set) +
@@ -352,23 +354,24 @@ namespace pdfem
         TrilinosWrappers::MPI::Vector u;
         system.initialize_vector(u);
         Drivers::StaticDriver driver(prm.driver);
-        std::string           exit_state = "completed", message;
-        unsigned int          n_steps    = 0;
+        std::string           exit_state  = "completed", message;
+        unsigned int          n_steps     = 0;
         double                output_time = 0.;
         IO::FieldOutput<dim>  field_output(out_dir,
-                                          dim == 2 && !settings.material.plane_stress,
+                                          dim == 2 &&
+                                            !settings.material.plane_stress,
                                           prm.material.poissons_ratio);
-        auto on_step = [&](const Drivers::StepRecord &record) {
-          n_steps = record.step;
-          const Coupling::ProblemSize s = system.size();
-          std::vector<double> row = {double(record.step),
-                                     record.time,
-                                     record.load_factor,
-                                     double(record.newton_iterations),
-                                     double(record.linear_iterations),
-                                     record.relative_residual,
-                                     double(s.n_broken_bonds),
-                                     0.};
+        auto                  on_step = [&](const Drivers::StepRecord &record) {
+          n_steps                         = record.step;
+          const Coupling::ProblemSize s   = system.size();
+          std::vector<double>         row = {double(record.step),
+                                             record.time,
+                                             record.load_factor,
+                                             double(record.newton_iterations),
+                                             double(record.linear_iterations),
+                                             record.relative_residual,
+                                             double(s.n_broken_bonds),
+                                             0.};
           for (const auto &R : system.reactions())
             for (unsigned int c = 0; c < dim; ++c)
               row.push_back(R[c]);
@@ -390,7 +393,7 @@ namespace pdfem
         timings["solve"]    = driver.timings().solve;
 
         // ---- results
-        start = clock::now();
+        start                                     = clock::now();
         const Coupling::NodalResults<dim> results = system.nodal_results(u);
         if (prm.output.write_vtu)
           field_output.write(system, results, 1.);
@@ -398,14 +401,17 @@ namespace pdfem
           IO::FieldOutput<dim>::write_nodes_csv(out_dir + "/nodes.csv",
                                                 results);
         const unsigned long n_broken_bonds = system.size().n_broken_bonds;
-        output_time       = seconds_since(start);
-        timings["output"] = output_time;
-        timings["total"]  = seconds_since(total_start);
+        struct rusage       usage;
+        getrusage(RUSAGE_SELF, &usage);
+        const double peak_memory_mb = usage.ru_maxrss / 1024.; // Linux: kB
+        output_time                 = seconds_since(start);
+        timings["output"]           = output_time;
+        timings["total"]            = seconds_since(total_start);
 
         if (root)
           {
-            std::ofstream   out(out_dir + "/summary.json");
-            IO::JsonWriter  json(out);
+            std::ofstream  out(out_dir + "/summary.json");
+            IO::JsonWriter json(out);
             json.begin_object();
             json.value("pdfem_version", PDFEM_VERSION);
             json.value("scene", prm.name);
@@ -435,9 +441,9 @@ namespace pdfem
             json.value("load_factor",
                        n_steps > 0 ? double(n_steps) / prm.driver.load_steps :
                                      0.);
-            const auto comps   = component_names<dim>();
-            const auto scomps  = stress_component_names<dim>();
-            const double inf   = std::numeric_limits<double>::infinity();
+            const auto          comps  = component_names<dim>();
+            const auto          scomps = stress_component_names<dim>();
+            const double        inf = std::numeric_limits<double>::infinity();
             std::vector<double> umax(dim, -inf), umin(dim, inf),
               smax(scomps.size(), -inf), smin(scomps.size(), inf);
             double s1max = -inf, dmax = 0.;
@@ -457,9 +463,9 @@ namespace pdfem
                 s1max = std::max(s1max, eigenvalues(results.stress[k])[0]);
                 dmax  = std::max(dmax, results.damage[k]);
               }
-            const std::pair<const char *, const std::vector<double> *> fields[] =
-              {{"max_displacement", &umax},
-               {"min_displacement", &umin}};
+            const std::pair<const char *, const std::vector<double> *>
+              fields[] = {{"max_displacement", &umax},
+                          {"min_displacement", &umin}};
             for (const auto &[name, values] : fields)
               {
                 json.begin_object(name);
@@ -494,6 +500,7 @@ namespace pdfem
                  {"setup", "assembly", "solve", "output", "total"})
               json.value(phase, timings[phase]);
             json.end_object();
+            json.value("peak_memory_mb_rank0", peak_memory_mb);
             json.end_object();
           }
 

@@ -3,6 +3,7 @@
 #include <pdfem/solvers/linear_solver.h>
 
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -31,12 +32,13 @@ namespace pdfem
     unsigned int
     LinearSolver::solve(const TrilinosWrappers::SparseMatrix &K,
                         TrilinosWrappers::MPI::Vector        &x,
-                        const TrilinosWrappers::MPI::Vector  &b)
+                        const TrilinosWrappers::MPI::Vector  &b,
+                        const TrilinosWrappers::SparseMatrix *auxiliary)
     {
       unsigned int iterations = 1;
       if (settings.type == "direct")
         {
-          SolverControl control(1, 0);
+          SolverControl                                  control(1, 0);
           TrilinosWrappers::SolverDirect::AdditionalData data(
             false,
             settings.direct_solver == "klu" ? "Amesos_Klu" : "Amesos_Mumps");
@@ -54,8 +56,8 @@ namespace pdfem
         }
       else
         {
-          const double  b_norm = b.l2_norm();
-          SolverControl control(settings.max_iterations,
+          const double                  b_norm = b.l2_norm();
+          SolverControl                 control(settings.max_iterations,
                                 settings.tolerance * b_norm,
                                 false,
                                 false);
@@ -63,16 +65,20 @@ namespace pdfem
             control, TrilinosWrappers::SolverGMRES::AdditionalData(false, 200));
           try
             {
-              if (settings.preconditioner == "amg")
+              if (settings.preconditioner == "amg" ||
+                  settings.preconditioner == "amg fe")
                 {
-                  TrilinosWrappers::PreconditionAMG                amg;
+                  TrilinosWrappers::PreconditionAMG                 amg;
                   TrilinosWrappers::PreconditionAMG::AdditionalData data;
                   data.elliptic              = false;
                   data.higher_order_elements = false;
                   data.smoother_sweeps       = 2;
                   data.aggregation_threshold = 0.02;
                   data.constant_modes        = constant_modes;
-                  amg.initialize(K, data);
+                  const bool on_fe = settings.preconditioner == "amg fe";
+                  AssertThrow(!on_fe || auxiliary,
+                              ExcMessage("amg fe needs the auxiliary matrix"));
+                  amg.initialize(on_fe ? *auxiliary : K, data);
                   solver.solve(K, x, b, amg);
                 }
               else
@@ -80,10 +86,8 @@ namespace pdfem
                   TrilinosWrappers::PreconditionILU ilu;
                   ilu.initialize(
                     K,
-                    TrilinosWrappers::PreconditionILU::AdditionalData(1,
-                                                                      0.,
-                                                                      1.,
-                                                                      1));
+                    TrilinosWrappers::PreconditionILU::AdditionalData(
+                      1, 0., 1., 1));
                   solver.solve(K, x, b, ilu);
                 }
             }
@@ -102,6 +106,66 @@ namespace pdfem
                                                      "linear solver diverged",
                          "the solution of the linear system is not finite");
       return iterations;
+    }
+    namespace
+    {
+      /// deal.II's solvers need an object with vmult().
+      struct OperatorWrapper
+      {
+        const std::function<void(TrilinosWrappers::MPI::Vector &,
+                                 const TrilinosWrappers::MPI::Vector &)> &op;
+        void
+        vmult(TrilinosWrappers::MPI::Vector       &y,
+              const TrilinosWrappers::MPI::Vector &x) const
+        {
+          op(y, x);
+        }
+      };
+    } // namespace
+
+    unsigned int
+    LinearSolver::solve(
+      const std::function<void(TrilinosWrappers::MPI::Vector &,
+                               const TrilinosWrappers::MPI::Vector &)> &K,
+      TrilinosWrappers::MPI::Vector                                    &x,
+      const TrilinosWrappers::MPI::Vector                              &b,
+      const TrilinosWrappers::SparseMatrix &auxiliary)
+    {
+      TrilinosWrappers::PreconditionAMG                 amg;
+      TrilinosWrappers::PreconditionAMG::AdditionalData data;
+      data.elliptic              = true;
+      data.higher_order_elements = false;
+      data.smoother_sweeps       = 2;
+      data.aggregation_threshold = 0.02;
+      data.constant_modes        = constant_modes;
+      amg.initialize(auxiliary, data);
+
+      const double  b_norm = b.l2_norm();
+      SolverControl control(settings.max_iterations,
+                            settings.tolerance * b_norm,
+                            false,
+                            false);
+      SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+        control,
+        SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(102, true));
+      x = 0.;
+      try
+        {
+          gmres.solve(OperatorWrapper{K}, x, b, amg);
+        }
+      catch (const SolverControl::NoConvergence &e)
+        {
+          throw RunFailure("linear solver diverged",
+                           "GMRES did not reach the tolerance " +
+                             number(settings.tolerance) + " in " +
+                             std::to_string(e.last_step) +
+                             " iterations (residual reduced by " +
+                             number(e.last_residual / b_norm) + ")");
+        }
+      if (!std::isfinite(x.l2_norm()))
+        throw RunFailure("linear solver diverged",
+                         "the solution of the linear system is not finite");
+      return control.last_step();
     }
   } // namespace Solvers
 } // namespace pdfem

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// pdfem_check: numeric checks on pdfem's outputs for the test suite (no deal.II,
-// so it compiles in a second).
+// pdfem_check: numeric checks on pdfem's outputs for the test suite (no
+// deal.II, so it compiles in a second).
 //
 //   pdfem_check value  summary.json KEY EXPECTED rel|abs TOL
 //       KEY is a dotted path (final.max_displacement.x); passes if
 //       |v - e| <= TOL |e| (rel) or |v - e| <= TOL (abs).
 //   pdfem_check string summary.json KEY EXPECTED
+//   pdfem_check get    summary.json KEY        (prints the value)
 //   pdfem_check csv    a.csv b.csv TOL
 //       same header and rows; every column agrees to TOL relative to the
 //       largest magnitude among the columns of its quantity (same first
@@ -33,9 +34,9 @@ namespace
       text,
       boolean,
       null
-    } kind = null;
-    double                                        x = 0.;
-    std::string                                   s;
+    } kind                                       = null;
+    double                                     x = 0.;
+    std::string                                s;
     std::vector<std::pair<std::string, Value>> members;
   };
 
@@ -119,9 +120,9 @@ namespace
   const Value *
   find(const Value &root, const std::string &key)
   {
-    const Value       *v = &root;
-    std::stringstream  path(key);
-    std::string        part;
+    const Value      *v = &root;
+    std::stringstream path(key);
+    std::string       part;
     while (std::getline(path, part, '.'))
       {
         const Value *next = nullptr;
@@ -174,6 +175,22 @@ int
 main(int argc, char **argv)
 {
   const std::vector<std::string> a(argv + 1, argv + argc);
+  if (a.size() == 3 && a[0] == "get")
+    {
+      const Value  root = load(a[1]);
+      const Value *v    = find(root, a[2]);
+      if (!v)
+        {
+          std::cerr << "pdfem_check: no " << a[2] << " in " << a[1] << "\n";
+          return 1;
+        }
+      std::cout.precision(17);
+      if (v->kind == Value::text)
+        std::cout << v->s << "\n";
+      else
+        std::cout << v->x << "\n";
+      return 0;
+    }
   if (a.size() == 4 && a[0] == "string")
     {
       const Value  root = load(a[1]);
@@ -245,6 +262,7 @@ main(int argc, char **argv)
     }
   std::cerr << "usage: pdfem_check value FILE KEY EXPECTED rel|abs TOL\n"
                "       pdfem_check string FILE KEY EXPECTED\n"
+               "       pdfem_check get FILE KEY\n"
                "       pdfem_check csv A B TOL\n";
   return 2;
 }

@@ -12,11 +12,16 @@ TEST(Cracks, SegmentCrossing2D)
   const Crack<2> crack{{Point<2>(0., -1.), Point<2>(0., 1.)}};
   EXPECT_TRUE(crack.cuts(Point<2>(-0.5, 0.), Point<2>(0.5, 0.2)));
   EXPECT_FALSE(crack.cuts(Point<2>(0.1, 0.), Point<2>(0.5, 0.2)));
-  EXPECT_FALSE(crack.cuts(Point<2>(-0.5, 1.5), Point<2>(0.5, 1.5))); // beyond the tip
-  EXPECT_TRUE(crack.cuts(Point<2>(0., 0.), Point<2>(0.5, 0.)));      // touching counts
-  EXPECT_TRUE(crack.cuts(Point<2>(-0.5, 1.), Point<2>(0.5, 1.)));    // through the tip
-  EXPECT_TRUE(crack.cuts(Point<2>(0., -0.5), Point<2>(0., 0.5)));    // along the crack
-  EXPECT_FALSE(crack.cuts(Point<2>(0., 1.5), Point<2>(0., 2.)));     // collinear, apart
+  EXPECT_FALSE(
+    crack.cuts(Point<2>(-0.5, 1.5), Point<2>(0.5, 1.5))); // beyond the tip
+  EXPECT_TRUE(
+    crack.cuts(Point<2>(0., 0.), Point<2>(0.5, 0.))); // touching counts
+  EXPECT_TRUE(
+    crack.cuts(Point<2>(-0.5, 1.), Point<2>(0.5, 1.))); // through the tip
+  EXPECT_TRUE(
+    crack.cuts(Point<2>(0., -0.5), Point<2>(0., 0.5))); // along the crack
+  EXPECT_FALSE(
+    crack.cuts(Point<2>(0., 1.5), Point<2>(0., 2.))); // collinear, apart
 }
 
 TEST(Cracks, SegmentCrossingTriangle3D)
@@ -24,9 +29,12 @@ TEST(Cracks, SegmentCrossingTriangle3D)
   const Crack<3> crack{
     {Point<3>(0., 0., 0.), Point<3>(0., 1., 0.), Point<3>(0., 0., 1.)}};
   EXPECT_TRUE(crack.cuts(Point<3>(-1., 0.2, 0.2), Point<3>(1., 0.2, 0.2)));
-  EXPECT_FALSE(crack.cuts(Point<3>(-1., 0.8, 0.8), Point<3>(1., 0.8, 0.8))); // outside
-  EXPECT_FALSE(crack.cuts(Point<3>(0.1, 0.2, 0.2), Point<3>(1., 0.2, 0.2))); // one side
-  EXPECT_TRUE(crack.cuts(Point<3>(-1., 0.5, 0.5), Point<3>(1., 0.5, 0.5)));  // on an edge
+  EXPECT_FALSE(
+    crack.cuts(Point<3>(-1., 0.8, 0.8), Point<3>(1., 0.8, 0.8))); // outside
+  EXPECT_FALSE(
+    crack.cuts(Point<3>(0.1, 0.2, 0.2), Point<3>(1., 0.2, 0.2))); // one side
+  EXPECT_TRUE(
+    crack.cuts(Point<3>(-1., 0.5, 0.5), Point<3>(1., 0.5, 0.5))); // on an edge
 }
 
 TEST(Cracks, AnyOfSeveral)
@@ -34,6 +42,8 @@ TEST(Cracks, AnyOfSeveral)
   const std::vector<Crack<2>> cracks = {
     Crack<2>{{Point<2>(0., 0.), Point<2>(0., 1.)}},
     Crack<2>{{Point<2>(2., 0.), Point<2>(2., 1.)}}};
-  EXPECT_TRUE(pdfem::Mesh::cut_by_any(cracks, Point<2>(1.5, 0.5), Point<2>(2.5, 0.5)));
-  EXPECT_FALSE(pdfem::Mesh::cut_by_any(cracks, Point<2>(0.5, 0.5), Point<2>(1.5, 0.5)));
+  EXPECT_TRUE(
+    pdfem::Mesh::cut_by_any(cracks, Point<2>(1.5, 0.5), Point<2>(2.5, 0.5)));
+  EXPECT_FALSE(
+    pdfem::Mesh::cut_by_any(cracks, Point<2>(0.5, 0.5), Point<2>(1.5, 0.5)));
 }

@@ -3,10 +3,10 @@
 // search, on random and graded point sets, with and without a member mask.
 #include <pdfem/pd/families.h>
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <random>
+
+#include <gtest/gtest.h>
 
 namespace
 {
@@ -96,10 +96,10 @@ TEST(Families, PairedRuleIsSymmetric)
 {
   // Two nodes with different horizons: each is in the other's family when
   // the distance is within the larger horizon.
-  const std::vector<dealii::Point<2>> x = {dealii::Point<2>(0., 0.),
-                                           dealii::Point<2>(1., 0.)};
+  const std::vector<dealii::Point<2>> x       = {dealii::Point<2>(0., 0.),
+                                                 dealii::Point<2>(1., 0.)};
   const std::vector<double>           horizon = {0.5, 1.5};
-  const Families f = pdfem::PD::find_families<2>(
+  const Families                      f       = pdfem::PD::find_families<2>(
     x, horizon, {0, 1}, std::vector<std::uint8_t>(2, 1));
   EXPECT_EQ(f.members, (std::vector<unsigned int>{1, 0}));
 }
@@ -109,7 +109,10 @@ TEST(Families, NodesAtExactlyTheHorizonAreMembers)
   std::vector<dealii::Point<2>> x;
   for (int i = -4; i <= 4; ++i)
     x.emplace_back(0.1 * i, 0.);
-  const Families f = pdfem::PD::find_families<2>(
-    x, std::vector<double>(x.size(), 0.4), {4}, std::vector<std::uint8_t>(x.size(), 1));
+  const Families f =
+    pdfem::PD::find_families<2>(x,
+                                std::vector<double>(x.size(), 0.4),
+                                {4},
+                                std::vector<std::uint8_t>(x.size(), 1));
   EXPECT_EQ(f.n_bonds(), 8u); // +-0.1 .. +-0.4, the ends included
 }

@@ -5,11 +5,11 @@
 // intact and damaged families.
 #include <pdfem/pd_models/pdlsm.h>
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <functional>
 #include <random>
+
+#include <gtest/gtest.h>
 
 namespace
 {
@@ -49,9 +49,9 @@ namespace
   void
   check_quadratic_exactness(const bool half)
   {
-    const double                 h = 0.1, delta = 3.1 * h;
-    std::vector<Tensor<1, dim>>  xi, a;
-    std::vector<double>          volume;
+    const double                         h = 0.1, delta = 3.1 * h;
+    std::vector<Tensor<1, dim>>          xi, a;
+    std::vector<double>                  volume;
     std::vector<SymmetricTensor<2, dim>> b;
     make_family<dim>(delta, h, xi, volume, 7, half);
     const pdfem::PDModels::PDLSM<dim> pdlsm(1., 1., 0.33);
@@ -102,16 +102,18 @@ TEST(PDLSM, ReproducesQuadraticFieldsOneSidedFamily3D)
 
 TEST(PDLSM, DetectsFamiliesThatCannotCarryTheFit)
 {
-  const pdfem::PDModels::PDLSM<2>       pdlsm(1., 1., 0.33);
-  std::vector<Tensor<1, 2>>             xi, a;
-  std::vector<SymmetricTensor<2, 2>>    b;
+  const pdfem::PDModels::PDLSM<2>    pdlsm(1., 1., 0.33);
+  std::vector<Tensor<1, 2>>          xi, a;
+  std::vector<SymmetricTensor<2, 2>> b;
   // Collinear members: no information across the line.
   for (int i = 1; i <= 6; ++i)
     xi.push_back(Tensor<1, 2>({0.1 * i, 0.}));
   std::vector<double> volume(xi.size(), 0.01);
   EXPECT_FALSE(pdlsm.compute_weights(xi, volume, 0.6, a, b));
   // Too few members for five coefficients.
-  xi = {Tensor<1, 2>({0.1, 0.}), Tensor<1, 2>({0., 0.1}), Tensor<1, 2>({0.1, 0.1})};
+  xi = {Tensor<1, 2>({0.1, 0.}),
+        Tensor<1, 2>({0., 0.1}),
+        Tensor<1, 2>({0.1, 0.1})};
   volume.assign(3, 0.01);
   EXPECT_FALSE(pdlsm.compute_weights(xi, volume, 0.3, a, b));
 }
@@ -130,9 +132,9 @@ namespace
   void
   check_tangent(const bool damaged)
   {
-    const double                 h = 0.1, delta = 3.05 * h;
-    std::vector<Tensor<1, dim>>  xi, a;
-    std::vector<double>          volume;
+    const double                         h = 0.1, delta = 3.05 * h;
+    std::vector<Tensor<1, dim>>          xi, a;
+    std::vector<double>                  volume;
     std::vector<SymmetricTensor<2, dim>> b;
     make_family<dim>(delta, h, xi, volume, 11);
     if (damaged) // break every bond crossing the plane x = 0.05
@@ -143,14 +145,15 @@ namespace
             volume.erase(volume.begin() + m);
           }
     const double E = 70e9, nu = 0.3;
-    const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+    const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)),
+                 mu     = E / (2 * (1 + nu));
     const pdfem::PDModels::PDLSM<dim> pdlsm(lambda, mu, 0.33);
     ASSERT_TRUE(pdlsm.compute_weights(xi, volume, delta, a, b));
     Tensor<1, dim> s;
-    s[0]            = 0.02;
-    s[1]            = -0.013; // a boundary node's area vector
-    const double Vk = 0.004;
-    const unsigned int n = xi.size() + 1; // owner first
+    s[0]                  = 0.02;
+    s[1]                  = -0.013; // a boundary node's area vector
+    const double       Vk = 0.004;
+    const unsigned int n  = xi.size() + 1; // owner first
 
     auto residual = [&](const std::vector<Tensor<1, dim>> &u) {
       Tensor<1, dim> L;
@@ -178,8 +181,8 @@ namespace
         Tensor<2, dim> K;
         if (j == 0)
           for (std::size_t m = 0; m < xi.size(); ++m)
-            K += Vk * pdlsm.divergence_block(b[m]) -
-                 pdlsm.traction_block(s, a[m]);
+            K +=
+              Vk * pdlsm.divergence_block(b[m]) - pdlsm.traction_block(s, a[m]);
         else
           K = -Vk * pdlsm.divergence_block(b[j - 1]) +
               pdlsm.traction_block(s, a[j - 1]);

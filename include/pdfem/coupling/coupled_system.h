@@ -136,9 +136,10 @@ namespace pdfem
     public:
       /// Set up nodes, families, DoFs and the sparsity pattern. @p cell_is_pd
       /// is indexed by active cell index.
-      CoupledSystem(const dealii::parallel::shared::Triangulation<dim, dim> &tria,
-                    const std::vector<bool> &cell_is_pd,
-                    const Settings<dim>     &settings);
+      CoupledSystem(
+        const dealii::parallel::shared::Triangulation<dim, dim> &tria,
+        const std::vector<bool>                                 &cell_is_pd,
+        const Settings<dim>                                     &settings);
       ~CoupledSystem() override;
 
       void

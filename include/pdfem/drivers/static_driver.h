@@ -48,10 +48,10 @@ namespace pdfem
       /// each converged step (before the next one changes anything);
       /// @p progress (may be null) gets one line per step.
       void
-      run(SystemInterface                        &system,
-          SystemInterface::Vector                &u,
+      run(SystemInterface                               &system,
+          SystemInterface::Vector                       &u,
           const std::function<void(const StepRecord &)> &on_step,
-          std::ostream                           *progress);
+          std::ostream                                  *progress);
 
       const DriverTimings &
       timings() const

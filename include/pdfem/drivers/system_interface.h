@@ -47,10 +47,7 @@ namespace pdfem
        * reaction forces. Returns |r|.
        */
       virtual double
-      residual(const Vector &u,
-               double        t,
-               Vector       &r,
-               bool          assemble_tangent) = 0;
+      residual(const Vector &u, double t, Vector &r, bool assemble_tangent) = 0;
 
       /// |f_ext| of the last residual() call (free DoFs).
       virtual double

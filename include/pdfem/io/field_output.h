@@ -37,10 +37,10 @@ namespace pdfem
                       const Coupling::NodalResults<dim> &results);
 
     private:
-      std::string                                directory;
-      bool                                       plane_strain;
-      double                                     nu;
-      unsigned int                               counter = 0;
+      std::string                                 directory;
+      bool                                        plane_strain;
+      double                                      nu;
+      unsigned int                                counter = 0;
       std::vector<std::pair<double, std::string>> records;
     };
   } // namespace IO

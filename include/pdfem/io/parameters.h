@@ -25,7 +25,8 @@ namespace pdfem
     /** `subsection Mesh`: where the cells come from and which are PD. */
     struct Mesh
     {
-      /// A gmsh `.msh` file, or a `.geo` script meshed with the gmsh executable.
+      /// A gmsh `.msh` file, or a `.geo` script meshed with the gmsh
+      /// executable.
       std::string input_file;
       /// Global refinements applied after reading.
       unsigned int refinements = 0;
@@ -50,11 +51,11 @@ namespace pdfem
     /** `subsection Material`: isotropic linear elasticity (FE and PD alike). */
     struct Material
     {
-      double     youngs_modulus  = 0.;   // E   [Pa]
-      double     poissons_ratio  = 0.;   // nu  [-]
-      double     density         = 0.;   // rho [kg/m^3]
-      PlaneModel plane           = PlaneModel::plane_stress;
-      double     thickness       = 1.;   // 2D only [m]; forces are per this thickness
+      double     youngs_modulus = 0.; // E   [Pa]
+      double     poissons_ratio = 0.; // nu  [-]
+      double     density        = 0.; // rho [kg/m^3]
+      PlaneModel plane          = PlaneModel::plane_stress;
+      double     thickness = 1.; // 2D only [m]; forces are per this thickness
 
       static void
       declare(dealii::ParameterHandler &prm);
@@ -113,7 +114,7 @@ namespace pdfem
     {
       std::string  type           = "direct"; // direct | gmres
       std::string  direct_solver  = "mumps";  // mumps | klu
-      std::string  preconditioner = "amg";    // amg | ilu
+      std::string  preconditioner = "amg fe"; // amg fe | amg | ilu
       double       tolerance      = 1e-10;    // relative residual (gmres)
       unsigned int max_iterations = 2000;
 
@@ -126,8 +127,8 @@ namespace pdfem
     /** `subsection Driver`. */
     struct Driver
     {
-      std::string  type       = "static";
-      unsigned int load_steps = 1;
+      std::string  type               = "static";
+      unsigned int load_steps         = 1;
       double       residual_tolerance = 1e-9; // relative to |f_ext| (or |r_0|)
       unsigned int max_iterations     = 10;
 
@@ -140,7 +141,7 @@ namespace pdfem
     /** `subsection Output`. */
     struct Output
     {
-      std::string directory;      // empty: "output-<scene name>"
+      std::string directory; // empty: "output-<scene name>"
       bool        write_vtu       = true;
       bool        write_nodes_csv = false;
       bool        print_timings   = false;
@@ -155,9 +156,9 @@ namespace pdfem
     struct Scene
     {
       int                dim = 2;
-      std::string        file;      // the .prm file (for messages)
-      std::string        base_dir;  // its folder: relative paths start here
-      std::string        name;      // its stem: default output folder name
+      std::string        file;     // the .prm file (for messages)
+      std::string        base_dir; // its folder: relative paths start here
+      std::string        name;     // its stem: default output folder name
       Mesh               mesh;
       Material           material;
       Peridynamics       peridynamics;
@@ -174,12 +175,13 @@ namespace pdfem
        * `pdfem --set` does.
        */
       void
-      read(const std::string                                       &file,
-           const std::vector<std::pair<std::string, std::string>> &overrides =
-             {});
+      read(
+        const std::string                                      &file,
+        const std::vector<std::pair<std::string, std::string>> &overrides = {});
     };
 
-    /** Read `set Dimension = 2|3` from a parameter file before anything else. */
+    /** Read `set Dimension = 2|3` from a parameter file before anything else.
+     */
     int
     read_dimension(const std::string &file);
 

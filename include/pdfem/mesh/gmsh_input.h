@@ -32,7 +32,8 @@ namespace pdfem
       list(const std::map<std::string, unsigned int> &names);
     };
 
-    /// Read the `$PhysicalNames` of a `.msh` file for a mesh of dimension @p dim.
+    /// Read the `$PhysicalNames` of a `.msh` file for a mesh of dimension @p
+    /// dim.
     PhysicalNames
     read_physical_names(const std::string &msh_file, int dim);
 
@@ -53,7 +54,8 @@ namespace pdfem
     /// Read a gmsh `.msh` file into @p tria (which must be empty).
     template <int dim>
     void
-    read_msh(const std::string &msh_file, dealii::Triangulation<dim, dim> &tria);
+    read_msh(const std::string               &msh_file,
+             dealii::Triangulation<dim, dim> &tria);
   } // namespace Mesh
 } // namespace pdfem
 

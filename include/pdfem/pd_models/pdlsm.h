@@ -67,10 +67,10 @@ namespace pdfem
        * Returns false if the family cannot carry the second-order fit.
        */
       bool
-      compute_weights(const std::vector<dealii::Tensor<1, dim>> &xi,
-                      const std::vector<double>                 &volume,
-                      double                                     delta,
-                      std::vector<dealii::Tensor<1, dim>>       &a,
+      compute_weights(const std::vector<dealii::Tensor<1, dim>>    &xi,
+                      const std::vector<double>                    &volume,
+                      double                                        delta,
+                      std::vector<dealii::Tensor<1, dim>>          &a,
                       std::vector<dealii::SymmetricTensor<2, dim>> &b) const;
 
       /// G_m = (lambda + mu) b_m + mu tr(b_m) I: the block of L_k on u_m.

@@ -2,11 +2,11 @@
 #ifndef PDFEM_SCENE_SCENE_H
 #define PDFEM_SCENE_SCENE_H
 
-#include <mpi.h>
-
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <mpi.h>
 
 namespace pdfem
 {

@@ -4,6 +4,7 @@
 
 #include <pdfem/io/parameters.h>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -44,15 +45,35 @@ namespace pdfem
       void
       set_constant_modes(const std::vector<std::vector<bool>> &modes);
 
-      /// Solve; returns the number of iterations (1 for direct).
+      /**
+       * Solve; returns the number of iterations (1 for direct). For the
+       * preconditioner "amg fe", the AMG hierarchy is built from
+       * @p auxiliary (the local FE stiffness of every cell, PD ones
+       * included) instead of K.
+       */
       unsigned int
       solve(const dealii::TrilinosWrappers::SparseMatrix &K,
             dealii::TrilinosWrappers::MPI::Vector        &x,
-            const dealii::TrilinosWrappers::MPI::Vector  &b);
+            const dealii::TrilinosWrappers::MPI::Vector  &b,
+            const dealii::TrilinosWrappers::SparseMatrix *auxiliary = nullptr);
+
+      /**
+       * Solve with GMRES (right preconditioning, so the tolerance is on the
+       * true residual) for an operator given only by its product @p K,
+       * preconditioned by ML AMG built from @p auxiliary.
+       */
+      unsigned int
+      solve(
+        const std::function<void(dealii::TrilinosWrappers::MPI::Vector &,
+                                 const dealii::TrilinosWrappers::MPI::Vector &)>
+                                                     &K,
+        dealii::TrilinosWrappers::MPI::Vector        &x,
+        const dealii::TrilinosWrappers::MPI::Vector  &b,
+        const dealii::TrilinosWrappers::SparseMatrix &auxiliary);
 
     private:
-      Parameters::LinearSolver         settings;
-      std::vector<std::vector<bool>>   constant_modes;
+      Parameters::LinearSolver       settings;
+      std::vector<std::vector<bool>> constant_modes;
     };
   } // namespace Solvers
 } // namespace pdfem
