@@ -243,6 +243,8 @@ namespace pdfem
           }
         if (prm.mesh.refinements > 0)
           tria.refine_global(prm.mesh.refinements);
+        timings["mesh"] = seconds_since(start);
+        start           = clock::now();
 
         // ---- regions
         std::set<unsigned int> material_ids, boundary_ids;
@@ -497,7 +499,7 @@ namespace pdfem
 
             json.begin_object("timings");
             for (const char *phase :
-                 {"setup", "assembly", "solve", "output", "total"})
+                 {"mesh", "setup", "assembly", "solve", "output", "total"})
               json.value(phase, timings[phase]);
             json.end_object();
             json.value("peak_memory_mb_rank0", peak_memory_mb);
@@ -510,7 +512,7 @@ namespace pdfem
                       << out_dir << "/" << std::endl;
             if (prm.output.print_timings)
               for (const char *phase :
-                   {"setup", "assembly", "solve", "output", "total"})
+                   {"mesh", "setup", "assembly", "solve", "output", "total"})
                 *progress << "  " << std::setw(9) << std::left << phase
                           << std::right << std::setw(10) << std::fixed
                           << std::setprecision(3) << timings[phase] << " s"

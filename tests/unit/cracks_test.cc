@@ -9,7 +9,7 @@ using pdfem::Mesh::Crack;
 
 TEST(Cracks, SegmentCrossing2D)
 {
-  const Crack<2> crack{{Point<2>(0., -1.), Point<2>(0., 1.)}};
+  const Crack<2> crack{{{Point<2>(0., -1.), Point<2>(0., 1.)}}};
   EXPECT_TRUE(crack.cuts(Point<2>(-0.5, 0.), Point<2>(0.5, 0.2)));
   EXPECT_FALSE(crack.cuts(Point<2>(0.1, 0.), Point<2>(0.5, 0.2)));
   EXPECT_FALSE(
@@ -27,7 +27,7 @@ TEST(Cracks, SegmentCrossing2D)
 TEST(Cracks, SegmentCrossingTriangle3D)
 {
   const Crack<3> crack{
-    {Point<3>(0., 0., 0.), Point<3>(0., 1., 0.), Point<3>(0., 0., 1.)}};
+    {{Point<3>(0., 0., 0.), Point<3>(0., 1., 0.), Point<3>(0., 0., 1.)}}};
   EXPECT_TRUE(crack.cuts(Point<3>(-1., 0.2, 0.2), Point<3>(1., 0.2, 0.2)));
   EXPECT_FALSE(
     crack.cuts(Point<3>(-1., 0.8, 0.8), Point<3>(1., 0.8, 0.8))); // outside
@@ -40,8 +40,8 @@ TEST(Cracks, SegmentCrossingTriangle3D)
 TEST(Cracks, AnyOfSeveral)
 {
   const std::vector<Crack<2>> cracks = {
-    Crack<2>{{Point<2>(0., 0.), Point<2>(0., 1.)}},
-    Crack<2>{{Point<2>(2., 0.), Point<2>(2., 1.)}}};
+    Crack<2>{{{Point<2>(0., 0.), Point<2>(0., 1.)}}},
+    Crack<2>{{{Point<2>(2., 0.), Point<2>(2., 1.)}}}};
   EXPECT_TRUE(
     pdfem::Mesh::cut_by_any(cracks, Point<2>(1.5, 0.5), Point<2>(2.5, 0.5)));
   EXPECT_FALSE(
