@@ -47,6 +47,10 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
 
 # ---- 2. configure and build (Release, ccache when present)
+# ccache: paths relative to the project (hits across clones in other folders), and the settings
+# that let it cache compilations using the precompiled header.
+export CCACHE_BASEDIR="$here"
+export CCACHE_SLOPPINESS="pch_defines,time_macros,include_file_mtime,include_file_ctime"
 if [ ! -f "$build/build.ninja" ]; then
   cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
 fi
