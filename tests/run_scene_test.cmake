@@ -2,6 +2,7 @@
 #
 # Directives read from the scene's comments:
 #   # CHECK: <json key> = <value> rel|abs <tol>   a value in summary.json
+#   # CHECK: <json key> > <value>                  (or <) a bound on a value in summary.json
 #   # EXIT-STATE: <state>                          expected exit_state (default completed)
 #   # EXPECT-ERROR: <text>                         bad input: exit status 2 and one line
 #                                                  "pdfem: error: ..." containing <text>
@@ -22,6 +23,8 @@ set(n_ranks 0)
 foreach(line IN LISTS directives)
   if(line MATCHES "^# CHECK: *([^ ]+) *= *([^ ]+) +(rel|abs) +([^ ]+)")
     list(APPEND checks "${CMAKE_MATCH_1}|${CMAKE_MATCH_2}|${CMAKE_MATCH_3}|${CMAKE_MATCH_4}")
+  elseif(line MATCHES "^# CHECK: *([^ ]+) *([<>]) *([^ ]+) *$")
+    list(APPEND checks "${CMAKE_MATCH_1}|${CMAKE_MATCH_3}|${CMAKE_MATCH_2}|")
   elseif(line MATCHES "^# EXIT-STATE: *(.+)$")
     string(STRIP "${CMAKE_MATCH_1}" exit_state)
   elseif(line MATCHES "^# EXPECT-ERROR: *(.+)$")
@@ -79,8 +82,13 @@ function(run_and_check tag launcher)
     list(GET parts 1 value)
     list(GET parts 2 kind)
     list(GET parts 3 tol)
-    execute_process(COMMAND "${CHECKER}" value "${WORK}/${tag}/summary.json" ${key} ${value} ${kind} ${tol}
-      RESULT_VARIABLE crc)
+    if(kind STREQUAL ">" OR kind STREQUAL "<")
+      execute_process(COMMAND "${CHECKER}" bound "${WORK}/${tag}/summary.json" ${key} ${kind} ${value}
+        RESULT_VARIABLE crc)
+    else()
+      execute_process(COMMAND "${CHECKER}" value "${WORK}/${tag}/summary.json" ${key} ${value} ${kind} ${tol}
+        RESULT_VARIABLE crc)
+    endif()
     if(crc)
       set(failed 1)
     endif()

@@ -559,6 +559,26 @@ namespace pdfem
     }
 
     template <int dim>
+    double
+    CoupledSystem<dim>::max_damage() const
+    {
+      const PD::Families &f      = impl->families;
+      double              result = 0.;
+      for (std::size_t o = 0; o < f.owners.size(); ++o)
+        {
+          const std::size_t n = f.offsets[o + 1] - f.offsets[o];
+          if (n == 0)
+            continue;
+          const std::size_t intact =
+            std::count(f.intact.begin() + f.offsets[o],
+                       f.intact.begin() + f.offsets[o + 1],
+                       std::uint8_t(1));
+          result = std::max(result, 1. - double(intact) / n);
+        }
+      return Utilities::MPI::max(result, impl->comm);
+    }
+
+    template <int dim>
     std::vector<std::string>
     CoupledSystem<dim>::reaction_names() const
     {

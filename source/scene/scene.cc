@@ -373,7 +373,7 @@ namespace pdfem
                                              double(record.linear_iterations),
                                              record.relative_residual,
                                              double(s.n_broken_bonds),
-                                             0.};
+                                             system.max_damage()};
           for (const auto &R : system.reactions())
             for (unsigned int c = 0; c < dim; ++c)
               row.push_back(R[c]);

@@ -7,6 +7,7 @@
 //       |v - e| <= TOL |e| (rel) or |v - e| <= TOL (abs).
 //   pdfem_check string summary.json KEY EXPECTED
 //   pdfem_check get    summary.json KEY        (prints the value)
+//   pdfem_check bound  summary.json KEY >|< BOUND
 //   pdfem_check csv    a.csv b.csv TOL
 //       same header and rows; every column agrees to TOL relative to the
 //       largest magnitude among the columns of its quantity (same first
@@ -191,6 +192,20 @@ main(int argc, char **argv)
         std::cout << v->x << "\n";
       return 0;
     }
+  if (a.size() == 5 && a[0] == "bound")
+    {
+      // pdfem_check bound FILE KEY > VALUE   (or <)
+      const Value  root  = load(a[1]);
+      const Value *v     = find(root, a[2]);
+      const double bound = std::stod(a[4]);
+      const bool   above = a[3] == ">";
+      const bool   ok =
+        v && v->kind == Value::number && (above ? v->x > bound : v->x < bound);
+      std::cout.precision(10);
+      std::cout << (ok ? "ok   " : "FAIL ") << a[2] << " = " << (v ? v->x : 0.)
+                << ", expected " << a[3] << " " << bound << "\n";
+      return ok ? 0 : 1;
+    }
   if (a.size() == 4 && a[0] == "string")
     {
       const Value  root = load(a[1]);
@@ -263,6 +278,7 @@ main(int argc, char **argv)
   std::cerr << "usage: pdfem_check value FILE KEY EXPECTED rel|abs TOL\n"
                "       pdfem_check string FILE KEY EXPECTED\n"
                "       pdfem_check get FILE KEY\n"
+               "       pdfem_check bound FILE KEY >|< BOUND\n"
                "       pdfem_check csv A B TOL\n";
   return 2;
 }

@@ -160,6 +160,10 @@ namespace pdfem
       ProblemSize
       size() const;
 
+      /// The largest PD node damage (fraction of broken bonds), over all ranks.
+      double
+      max_damage() const;
+
       /// Names of the Dirichlet sets (boundaries or points), in input order.
       std::vector<std::string>
       reaction_names() const;
