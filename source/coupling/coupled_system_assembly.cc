@@ -66,29 +66,39 @@ namespace pdfem
     CoupledSystem<dim>::Impl::cell_stiffness(const FEValuesType  &fv,
                                              std::vector<double> &K) const
     {
-      // K_ij = int lambda div(phi_i) div(phi_j) + 2 mu eps(phi_i):eps(phi_j)
-      const double                     lambda = settings.material.lambda();
-      const double                     mu     = settings.material.mu();
-      const FEValuesExtractors::Vector displacement(0);
-      const unsigned int               n = fv.dofs_per_cell;
-      static thread_local std::vector<SymmetricTensor<2, dim>> eps;
-      static thread_local std::vector<double>                  div;
+      // K_ij = int lambda div(phi_i) div(phi_j) + 2 mu eps(phi_i):eps(phi_j).
+      // The vector elements are primitive: phi_i = N_i e_{c_i}, so with
+      // g = grad N: div phi_i = g_i[c_i] and
+      // 2 eps_i : eps_j = g_i . g_j delta_{c_i c_j} + g_i[c_j] g_j[c_i].
+      const double       lambda  = settings.material.lambda();
+      const double       mu      = settings.material.mu();
+      const auto        &fe_cell = fv.get_fe();
+      const unsigned int n       = fv.dofs_per_cell;
+      static thread_local std::vector<unsigned int> comp;
+      comp.resize(n);
+      for (unsigned int i = 0; i < n; ++i)
+        comp[i] = fe_cell.system_to_component_index(i).first;
       K.assign(n * n, 0.);
-      eps.resize(n);
-      div.resize(n);
       for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
         {
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              eps[i] = fv[displacement].symmetric_gradient(i, q);
-              div[i] = fv[displacement].divergence(i, q);
-            }
           const double JxW = fv.JxW(q);
           for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j < n; ++j)
-              K[i * n + j] +=
-                (lambda * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) * JxW;
+            {
+              const Tensor<1, dim> gi = fv.shape_grad(i, q) * JxW;
+              for (unsigned int j = i; j < n; ++j)
+                {
+                  const Tensor<1, dim> &gj = fv.shape_grad(j, q);
+                  double                v = lambda * gi[comp[i]] * gj[comp[j]] +
+                             mu * gi[comp[j]] * gj[comp[i]];
+                  if (comp[i] == comp[j])
+                    v += mu * (gi * gj);
+                  K[i * n + j] += v;
+                }
+            }
         }
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < i; ++j)
+          K[i * n + j] = K[j * n + i];
     }
 
     template <int dim>
@@ -140,7 +150,12 @@ namespace pdfem
     void
     CoupledSystem<dim>::Impl::assemble_fe_matrix()
     {
+      // The FE cells' stiffness, unconstrained (f_int = K_FE u); for "amg
+      // fe" also the stiffness of every cell with held DoFs eliminated, the
+      // preconditioner's matrix. One cell matrix serves both.
       fe_matrix = 0.;
+      if (matrix_free)
+        auxiliary = 0.;
       hp::FEValues<dim>             fe_values(mapping,
                                   fe,
                                   quadrature,
@@ -148,39 +163,25 @@ namespace pdfem
       std::vector<global_dof_index> local_dofs;
       std::vector<double>           K;
       for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned() && !cell_pd[cell->active_cell_index()])
-          {
-            fe_values.reinit(cell);
-            cell_stiffness(fe_values.get_present_fe_values(), K);
-            local_dofs.resize(cell->get_fe().n_dofs_per_cell());
-            cell->get_dof_indices(local_dofs);
+        {
+          const bool fe_cell = !cell_pd[cell->active_cell_index()];
+          if (!cell->is_locally_owned() || (!fe_cell && !matrix_free))
+            continue;
+          fe_values.reinit(cell);
+          cell_stiffness(fe_values.get_present_fe_values(), K);
+          local_dofs.resize(cell->get_fe().n_dofs_per_cell());
+          cell->get_dof_indices(local_dofs);
+          if (fe_cell)
             add_to_matrix(fe_matrix, local_dofs, local_dofs, K, false);
-          }
-      fe_matrix.compress(VectorOperation::add);
-    }
-
-    template <int dim>
-    void
-    CoupledSystem<dim>::Impl::assemble_auxiliary()
-    {
-      auxiliary = 0.;
-      hp::FEValues<dim>             fe_values(mapping,
-                                  fe,
-                                  quadrature,
-                                  update_gradients | update_JxW_values);
-      std::vector<global_dof_index> local_dofs;
-      std::vector<double>           K;
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            fe_values.reinit(cell);
-            cell_stiffness(fe_values.get_present_fe_values(), K);
-            local_dofs.resize(cell->get_fe().n_dofs_per_cell());
-            cell->get_dof_indices(local_dofs);
+          if (matrix_free)
             add_to_matrix(auxiliary, local_dofs, local_dofs, K);
-          }
-      add_held_diagonal(auxiliary);
-      auxiliary.compress(VectorOperation::add);
+        }
+      fe_matrix.compress(VectorOperation::add);
+      if (matrix_free)
+        {
+          add_held_diagonal(auxiliary);
+          auxiliary.compress(VectorOperation::add);
+        }
     }
 
     template <int dim>
@@ -265,6 +266,70 @@ namespace pdfem
       yv = y.trilinos_vector()[0];
       for (unsigned int i = 0; i < held_lid.size(); ++i)
         yv[held_lid[i]] = held_value[i] * xv[held_lid[i]];
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::make_block_jacobi()
+    {
+      // D_k = FE diagonal block + PD block d(row k)/d(u_k); held DoFs get
+      // their diagonal entry alone.
+      block_inverse.assign(owned_nodes.size(), Tensor<2, dim>());
+      std::vector<std::size_t> owner_of(n_nodes, families.owners.size());
+      for (std::size_t o = 0; o < families.owners.size(); ++o)
+        owner_of[families.owners[o]] = o;
+      for (std::size_t n = 0; n < owned_nodes.size(); ++n)
+        {
+          const unsigned int k = owned_nodes[n];
+          Tensor<2, dim>     D;
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              D[i][j] = fe_matrix.el(node_dof[k][i], node_dof[k][j]);
+          const std::size_t o = owner_of[k];
+          if (o < families.owners.size() && !decoupled[o])
+            {
+              const Tensor<1, dim> s        = boundary_area[k];
+              const bool           boundary = s.norm_square() > 0.;
+              for (std::size_t j = families.offsets[o];
+                   j < families.offsets[o + 1];
+                   ++j)
+                if (families.intact[j])
+                  {
+                    D += pd_volume[k] * pdlsm.divergence_block(weight_b[j]);
+                    if (boundary)
+                      D -= pdlsm.traction_block(s, weight_a[j]);
+                  }
+            }
+          for (unsigned int i = 0; i < dim; ++i)
+            if (dof_fixed[node_dof[k][i]] ||
+                (o < families.owners.size() && decoupled[o]))
+              {
+                for (unsigned int j = 0; j < dim; ++j)
+                  D[i][j] = D[j][i] = 0.;
+                D[i][i] = held_diagonal(node_dof[k][i]);
+              }
+          block_inverse[n] = invert(D);
+        }
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::apply_block_jacobi(
+      TrilinosWrappers::MPI::Vector       &w,
+      const TrilinosWrappers::MPI::Vector &t) const
+    {
+      const double  *tv = t.trilinos_vector()[0];
+      double        *wv = w.trilinos_vector()[0];
+      Tensor<1, dim> tk;
+      for (std::size_t n = 0; n < owned_nodes.size(); ++n)
+        {
+          const auto &lid = owned_lid[owned_nodes[n]];
+          for (unsigned int c = 0; c < dim; ++c)
+            tk[c] = tv[lid[c]];
+          const Tensor<1, dim> wk = block_inverse[n] * tk;
+          for (unsigned int c = 0; c < dim; ++c)
+            wv[lid[c]] = wk[c];
+        }
     }
 
     template <int dim>
@@ -509,18 +574,22 @@ namespace pdfem
       Impl &s = *impl;
       du.reinit(s.owned, s.comm);
       if (s.matrix_free)
-        return s.solver.solve([&s](Vector       &y,
-                                   const Vector &x) { s.vmult(y, x); },
-                              du,
-                              r,
-                              s.auxiliary);
+        {
+          if (s.block_inverse.empty())
+            s.make_block_jacobi();
+          return s.solver.solve(
+            [&s](Vector &y, const Vector &x) { s.vmult(y, x); },
+            du,
+            r,
+            s.auxiliary,
+            [&s](Vector &w, const Vector &t) { s.apply_block_jacobi(w, t); });
+        }
       return s.solver.solve(s.matrix, du, r);
     }
 
 #define INSTANTIATE(dim)                                                       \
   template void CoupledSystem<dim>::Impl::assemble_fe_matrix();                \
   template void CoupledSystem<dim>::Impl::update_held();                       \
-  template void CoupledSystem<dim>::Impl::assemble_auxiliary();                \
   template void CoupledSystem<dim>::Impl::add_to_matrix(                       \
     TrilinosWrappers::SparseMatrix &,                                          \
     const std::vector<global_dof_index> &,                                     \

@@ -56,7 +56,8 @@ namespace pdfem
       make_boundary_conditions();
 
       // ----- assembly (coupled_system_assembly.cc)
-      /// The FE-cells part of f_int, once: linear, it never changes.
+      /// The FE-cells part of f_int, once (linear, it never changes), and for
+      /// "amg fe" the auxiliary matrix: FE stiffness of every cell.
       void
       assemble_fe_matrix();
       /**
@@ -79,12 +80,17 @@ namespace pdfem
       void
       vmult(dealii::TrilinosWrappers::MPI::Vector       &y,
             const dealii::TrilinosWrappers::MPI::Vector &x) const;
+      /// Inverse node blocks (dim x dim) of the tangent's diagonal, for the
+      /// block-Jacobi correction of the "amg fe" preconditioner.
+      void
+      make_block_jacobi();
+      /// w = D^-1 t with the node blocks of make_block_jacobi().
+      void
+      apply_block_jacobi(dealii::TrilinosWrappers::MPI::Vector       &w,
+                         const dealii::TrilinosWrappers::MPI::Vector &t) const;
       /// The assembled tangent (direct solvers, "amg", "ilu").
       void
       assemble_tangent();
-      /// The auxiliary matrix for "amg fe": FE stiffness of every cell.
-      void
-      assemble_auxiliary();
       /// Add a local block (rows x cols) to @p target; with @p eliminate,
       /// rows and columns of prescribed DoFs are dropped.
       void
@@ -175,8 +181,9 @@ namespace pdfem
       std::unique_ptr<dealii::FunctionParser<3>>              body_fn;
 
       // ----- linear algebra
-      std::vector<unsigned int> held_lid;   // owned-local index
-      std::vector<double>       held_value; // its diagonal entry
+      std::vector<dealii::Tensor<2, dim>> block_inverse; // per owned node
+      std::vector<unsigned int>           held_lid;      // owned-local index
+      std::vector<double>                 held_value;    // its diagonal entry
       /// gmres with "amg fe": no assembled tangent, products on the fly.
       bool                                          matrix_free = false;
       dealii::TrilinosWrappers::SparseMatrix        fe_matrix; // FE cells, full

@@ -253,19 +253,22 @@ namespace pdfem
 
       update_decoupled();
 
-      relevant = owned;
-      std::vector<types::global_dof_index> extra;
+      // Ghosts: every DoF of a family member or of a vertex of an owned
+      // cell (marked, not collected: families list millions of members).
+      std::vector<std::uint8_t> needed(dofs.n_dofs(), 0);
       for (const auto &cell : dofs.active_cell_iterators())
         if (cell->is_locally_owned())
           for (const unsigned int v : cell->vertex_indices())
             for (unsigned int c = 0; c < dim; ++c)
-              extra.push_back(
-                node_dof[vertex_to_node[cell->vertex_index(v)]][c]);
+              needed[node_dof[vertex_to_node[cell->vertex_index(v)]][c]] = 1;
       for (const unsigned int m : families.members)
         for (unsigned int c = 0; c < dim; ++c)
-          extra.push_back(node_dof[m][c]);
-      std::sort(extra.begin(), extra.end());
-      extra.erase(std::unique(extra.begin(), extra.end()), extra.end());
+          needed[node_dof[m][c]] = 1;
+      relevant = owned;
+      std::vector<types::global_dof_index> extra;
+      for (types::global_dof_index i = 0; i < needed.size(); ++i)
+        if (needed[i])
+          extra.push_back(i);
       relevant.add_indices(extra.begin(), extra.end());
       relevant.compress();
 
@@ -515,8 +518,6 @@ namespace pdfem
       impl->make_sparsity();
       impl->update_held();
       impl->assemble_fe_matrix();
-      if (impl->matrix_free)
-        impl->assemble_auxiliary();
     }
 
     template <int dim>

@@ -62,7 +62,9 @@ namespace pdfem
                                 false,
                                 false);
           TrilinosWrappers::SolverGMRES solver(
-            control, TrilinosWrappers::SolverGMRES::AdditionalData(false, 200));
+            control,
+            TrilinosWrappers::SolverGMRES::AdditionalData(false,
+                                                          settings.restart));
           try
             {
               if (settings.preconditioner == "amg" ||
@@ -112,8 +114,7 @@ namespace pdfem
       /// deal.II's solvers need an object with vmult().
       struct OperatorWrapper
       {
-        const std::function<void(TrilinosWrappers::MPI::Vector &,
-                                 const TrilinosWrappers::MPI::Vector &)> &op;
+        const LinearSolver::Operator &op;
         void
         vmult(TrilinosWrappers::MPI::Vector       &y,
               const TrilinosWrappers::MPI::Vector &x) const
@@ -121,15 +122,43 @@ namespace pdfem
           op(y, x);
         }
       };
+
+      /**
+       * AMG of the FE stiffness followed by one block-Jacobi correction with
+       * the true operator: z = A(r), z += D^-1 (r - K z), D the node blocks
+       * of K's diagonal. The FE stiffness is stiffer than the nonlocal PD
+       * operator at high frequencies, so the AMG alone under-corrects them;
+       * the correction uses the PD operator itself. On the 3D box: 109 -> 70
+       * GMRES iterations for one extra product each (damping 0.7 no better,
+       * 1.3 diverges; ML sweeps 1/2/3: 95/70/64 iterations, 2 fastest).
+       */
+      struct CorrectedAMG
+      {
+        const TrilinosWrappers::PreconditionAMG &amg;
+        const LinearSolver::Operator            &K;
+        const LinearSolver::Operator            &jacobi;
+        mutable TrilinosWrappers::MPI::Vector    t, w;
+        void
+        vmult(TrilinosWrappers::MPI::Vector       &z,
+              const TrilinosWrappers::MPI::Vector &r) const
+        {
+          amg.vmult(z, r);
+          t.reinit(r, true);
+          w.reinit(r, true);
+          K(t, z);
+          t.sadd(-1., 1., r);
+          jacobi(w, t);
+          z += w;
+        }
+      };
     } // namespace
 
     unsigned int
-    LinearSolver::solve(
-      const std::function<void(TrilinosWrappers::MPI::Vector &,
-                               const TrilinosWrappers::MPI::Vector &)> &K,
-      TrilinosWrappers::MPI::Vector                                    &x,
-      const TrilinosWrappers::MPI::Vector                              &b,
-      const TrilinosWrappers::SparseMatrix &auxiliary)
+    LinearSolver::solve(const Operator                       &K,
+                        TrilinosWrappers::MPI::Vector        &x,
+                        const TrilinosWrappers::MPI::Vector  &b,
+                        const TrilinosWrappers::SparseMatrix &auxiliary,
+                        const Operator                       &block_jacobi)
     {
       TrilinosWrappers::PreconditionAMG                 amg;
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
@@ -147,11 +176,18 @@ namespace pdfem
                             false);
       SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
         control,
-        SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(102, true));
+        SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+          settings.restart + 2, true));
       x = 0.;
       try
         {
-          gmres.solve(OperatorWrapper{K}, x, b, amg);
+          if (block_jacobi)
+            gmres.solve(OperatorWrapper{K},
+                        x,
+                        b,
+                        CorrectedAMG{amg, K, block_jacobi, {}, {}});
+          else
+            gmres.solve(OperatorWrapper{K}, x, b, amg);
         }
       catch (const SolverControl::NoConvergence &e)
         {

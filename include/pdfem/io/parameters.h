@@ -117,6 +117,7 @@ namespace pdfem
       std::string  preconditioner = "amg fe"; // amg fe | amg | ilu
       double       tolerance      = 1e-10;    // relative residual (gmres)
       unsigned int max_iterations = 2000;
+      unsigned int restart        = 150; // gmres: Krylov vectors kept
 
       static void
       declare(dealii::ParameterHandler &prm);

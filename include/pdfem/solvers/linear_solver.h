@@ -60,16 +60,19 @@ namespace pdfem
       /**
        * Solve with GMRES (right preconditioning, so the tolerance is on the
        * true residual) for an operator given only by its product @p K,
-       * preconditioned by ML AMG built from @p auxiliary.
+       * preconditioned by ML AMG built from @p auxiliary and, if
+       * @p block_jacobi is given (w = D^-1 t with D the node blocks of K's
+       * diagonal), one correction z += D^-1 (r - K z) after the AMG.
        */
+      using Operator =
+        std::function<void(dealii::TrilinosWrappers::MPI::Vector &,
+                           const dealii::TrilinosWrappers::MPI::Vector &)>;
       unsigned int
-      solve(
-        const std::function<void(dealii::TrilinosWrappers::MPI::Vector &,
-                                 const dealii::TrilinosWrappers::MPI::Vector &)>
-                                                     &K,
-        dealii::TrilinosWrappers::MPI::Vector        &x,
-        const dealii::TrilinosWrappers::MPI::Vector  &b,
-        const dealii::TrilinosWrappers::SparseMatrix &auxiliary);
+      solve(const Operator                               &K,
+            dealii::TrilinosWrappers::MPI::Vector        &x,
+            const dealii::TrilinosWrappers::MPI::Vector  &b,
+            const dealii::TrilinosWrappers::SparseMatrix &auxiliary,
+            const Operator                               &block_jacobi = {});
 
     private:
       Parameters::LinearSolver       settings;
