@@ -184,33 +184,63 @@ namespace pdfem
         }
     }
 
+    namespace
+    {
+      /// y = b x for a symmetric tensor stored as deal.II's raw entries
+      /// (2D: 00, 11, 01; 3D: 00, 11, 22, 01, 02, 12).
+      template <int dim>
+      inline void
+      symmetric_product(const double *b, const double *x, double *y)
+      {
+        if constexpr (dim == 2)
+          {
+            y[0] = b[0] * x[0] + b[2] * x[1];
+            y[1] = b[2] * x[0] + b[1] * x[1];
+          }
+        else
+          {
+            y[0] = b[0] * x[0] + b[3] * x[1] + b[4] * x[2];
+            y[1] = b[3] * x[0] + b[1] * x[1] + b[5] * x[2];
+            y[2] = b[4] * x[0] + b[5] * x[1] + b[2] * x[2];
+          }
+      }
+    } // namespace
+
     template <int dim>
     void
     CoupledSystem<dim>::Impl::apply_pd(const TrilinosWrappers::MPI::Vector &x,
                                        TrilinosWrappers::MPI::Vector &y) const
     {
-      // Row k: V_k (-L_k) + sigma_k s_k over the intact bonds, i.e.
-      // sum_m (-V_k G_m + T_m)(x_m - x_k) with G_m = divergence block of b_m
-      // and T_m = traction block of (s_k, a_m). Raw local arrays: the
-      // ghosted x by relevant_lid, the owned y by owned_lid.
+      // Row k: V_k (-L_k) + sigma_k s_k over the intact bonds, with
+      //   L_k = sum_m (lambda + mu) b_m dx_m + mu tr(b_m) dx_m    (G_m dx_m)
+      //   sigma_k = C : sym(sum_m dx_m (x) a_m)                   (boundary)
+      // so the boundary term needs the gradient only, once per node. Raw
+      // local arrays: the ghosted x by relevant_lid, the owned y by owned_lid.
+      static_assert(sizeof(SymmetricTensor<2, dim>) ==
+                      SymmetricTensor<2, dim>::n_independent_components *
+                        sizeof(double),
+                    "weight_b must be a packed array of doubles");
       const double *xv = x.trilinos_vector()[0];
       double       *yv = y.trilinos_vector()[0];
       const double  lambda_mu =
         settings.material.lambda() + settings.material.mu();
-      const double   mu = settings.material.mu();
-      Tensor<1, dim> xk, dx;
+      const double           mu = settings.material.mu();
+      constexpr unsigned int nb =
+        SymmetricTensor<2, dim>::n_independent_components;
+      const double *b_all =
+        weight_b.empty() ? nullptr : &weight_b[0].access_raw_entry(0);
       for (std::size_t o = 0; o < families.owners.size(); ++o)
         {
           if (decoupled[o])
             continue;
           const unsigned int k = families.owners[o];
+          double             xk[dim], dx[dim], bdx[dim];
+          double             bdx_sum[dim] = {}, trdx_sum[dim] = {};
           for (unsigned int c = 0; c < dim; ++c)
             xk[c] = xv[relevant_lid[k][c]];
           const Tensor<1, dim> s        = boundary_area[k];
           const bool           boundary = s.norm_square() > 0.;
-          // L_k = sum_m G_m dx_m with G_m dx = (lambda + mu) b_m dx
-          // + mu tr(b_m) dx, without forming G_m.
-          Tensor<1, dim> bdx_sum, trdx_sum, traction;
+          Tensor<2, dim>       grad_u;
           for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
                ++j)
             {
@@ -219,14 +249,26 @@ namespace pdfem
               const auto &lid = relevant_lid[families.members[j]];
               for (unsigned int c = 0; c < dim; ++c)
                 dx[c] = xv[lid[c]] - xk[c];
-              const SymmetricTensor<2, dim> &b = weight_b[j];
-              bdx_sum += b * dx;
-              trdx_sum += trace(b) * dx;
+              const double *b  = b_all + nb * j;
+              double        tr = b[0] + b[1];
+              if constexpr (dim == 3)
+                tr += b[2];
+              symmetric_product<dim>(b, dx, bdx);
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  bdx_sum[c] += bdx[c];
+                  trdx_sum[c] += tr * dx[c];
+                }
               if (boundary)
-                traction += pdlsm.traction_block(s, weight_a[j]) * dx;
+                for (unsigned int c = 0; c < dim; ++c)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    grad_u[c][d] += dx[c] * weight_a[j][d];
             }
-          const Tensor<1, dim> f =
-            -pd_volume[k] * (lambda_mu * bdx_sum + mu * trdx_sum) + traction;
+          Tensor<1, dim> f;
+          for (unsigned int c = 0; c < dim; ++c)
+            f[c] = -pd_volume[k] * (lambda_mu * bdx_sum[c] + mu * trdx_sum[c]);
+          if (boundary)
+            f += pdlsm.stress(grad_u) * s;
           for (unsigned int c = 0; c < dim; ++c)
             yv[owned_lid[k][c]] += f[c];
         }
