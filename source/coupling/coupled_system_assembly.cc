@@ -379,25 +379,30 @@ namespace pdfem
     CoupledSystem<dim>::Impl::assemble_tangent()
     {
       matrix = 0.;
-      // FE cells.
-      hp::FEValues<dim>             fe_values(mapping,
-                                  fe,
-                                  quadrature,
-                                  update_gradients | update_JxW_values);
-      std::vector<global_dof_index> local_dofs;
-      std::vector<double>           K;
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned() && !cell_pd[cell->active_cell_index()])
-          {
-            fe_values.reinit(cell);
-            cell_stiffness(fe_values.get_present_fe_values(), K);
-            local_dofs.resize(cell->get_fe().n_dofs_per_cell());
-            cell->get_dof_indices(local_dofs);
-            add_to_matrix(matrix, local_dofs, local_dofs, K);
-          }
+      // FE cells: the owned rows of the unconstrained FE matrix (assembled
+      // once), with prescribed rows and columns dropped.
+      std::vector<global_dof_index> cols;
+      std::vector<double>           values;
+      for (const auto row : owned)
+        {
+          if (dof_fixed[row])
+            continue;
+          cols.clear();
+          values.clear();
+          for (auto entry = fe_matrix.begin(row); entry != fe_matrix.end(row);
+               ++entry)
+            if (!dof_fixed[entry->column()] && entry->value() != 0.)
+              {
+                cols.push_back(entry->column());
+                values.push_back(entry->value());
+              }
+          matrix.add(
+            row, cols.size(), cols.data(), values.data(), false, false);
+        }
 
       // PD rows: the blocks of apply_pd, owner first.
-      std::vector<global_dof_index> rows(dim), cols;
+      std::vector<global_dof_index> rows(dim);
+      std::vector<double>           K;
       for (std::size_t o = 0; o < families.owners.size(); ++o)
         {
           if (decoupled[o])

@@ -45,17 +45,12 @@ namespace pdfem
       void
       set_constant_modes(const std::vector<std::vector<bool>> &modes);
 
-      /**
-       * Solve; returns the number of iterations (1 for direct). For the
-       * preconditioner "amg fe", the AMG hierarchy is built from
-       * @p auxiliary (the local FE stiffness of every cell, PD ones
-       * included) instead of K.
-       */
+      /// Solve with the assembled @p K: direct, or GMRES with ML AMG or ILU
+      /// of K. Returns the number of iterations (1 for direct).
       unsigned int
       solve(const dealii::TrilinosWrappers::SparseMatrix &K,
             dealii::TrilinosWrappers::MPI::Vector        &x,
-            const dealii::TrilinosWrappers::MPI::Vector  &b,
-            const dealii::TrilinosWrappers::SparseMatrix *auxiliary = nullptr);
+            const dealii::TrilinosWrappers::MPI::Vector  &b);
 
       /**
        * Solve with GMRES (right preconditioning, so the tolerance is on the
