@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "coupled_system_impl.h"
+#include <Epetra_CrsMatrix.h>
 
 namespace pdfem
 {
@@ -380,22 +381,32 @@ namespace pdfem
     {
       matrix = 0.;
       // FE cells: the owned rows of the unconstrained FE matrix (assembled
-      // once), with prescribed rows and columns dropped.
+      // once), with prescribed rows and columns dropped. Rows are read as
+      // Epetra views: deal.II's Trilinos row iterator extracts the row again
+      // at every step (the tangent took 231 s instead of 2 s on the box).
+      const Epetra_CrsMatrix       &A = fe_matrix.trilinos_matrix();
       std::vector<global_dof_index> cols;
       std::vector<double>           values;
-      for (const auto row : owned)
+      for (int local_row = 0; local_row < A.NumMyRows(); ++local_row)
         {
+          const global_dof_index row = A.GRID(local_row);
           if (dof_fixed[row])
             continue;
+          int     n = 0;
+          double *v = nullptr;
+          int    *c = nullptr;
+          A.ExtractMyRowView(local_row, n, v, c);
           cols.clear();
           values.clear();
-          for (auto entry = fe_matrix.begin(row); entry != fe_matrix.end(row);
-               ++entry)
-            if (!dof_fixed[entry->column()] && entry->value() != 0.)
-              {
-                cols.push_back(entry->column());
-                values.push_back(entry->value());
-              }
+          for (int e = 0; e < n; ++e)
+            {
+              const global_dof_index col = A.GCID(c[e]);
+              if (!dof_fixed[col] && v[e] != 0.)
+                {
+                  cols.push_back(col);
+                  values.push_back(v[e]);
+                }
+            }
           matrix.add(
             row, cols.size(), cols.data(), values.data(), false, false);
         }

@@ -432,7 +432,21 @@ namespace pdfem
         if (it != set_names.end())
           return it - set_names.begin();
         std::vector<unsigned int> nodes;
-        if (bc.at_point)
+        if (!bc.vertices.empty())
+          {
+            for (const unsigned int v : bc.vertices)
+              {
+                if (v >= vertex_to_node.size() ||
+                    vertex_to_node[v] == numbers::invalid_unsigned_int)
+                  throw InputError(settings.source_file,
+                                   bc.name,
+                                   "node " + std::to_string(v + 1) +
+                                     " belongs to no element",
+                                   "nodes of the mesh's elements");
+                nodes.push_back(vertex_to_node[v]);
+              }
+          }
+        else if (bc.at_point)
           {
             double       best = std::numeric_limits<double>::max();
             unsigned int node = 0;

@@ -150,6 +150,11 @@ namespace pdfem
                                DataOut<dim>::type_cell_data);
       data_out.add_data_vector(rank, "rank", DataOut<dim>::type_cell_data);
       data_out.build_patches(system.mapping(), 1);
+      // zlib at its fastest: the default (best compression) took 1.9 s of
+      // the 3D box's 12 s for a file 10-20 % smaller.
+      DataOutBase::VtkFlags flags;
+      flags.compression_level = DataOutBase::VtkFlags::best_speed;
+      data_out.set_flags(flags);
 
       const MPI_Comm    comm = vector_dofs.get_communicator();
       const std::string pvtu = data_out.write_vtu_with_pvtu_record(

@@ -9,7 +9,10 @@
 #include <pdfem/io/parameters.h>
 #include <pdfem/mesh/cracks.h>
 #include <pdfem/mesh/gmsh_input.h>
+#include <pdfem/io/pdlsm_fem_input.h>
 #include <pdfem/scene/scene.h>
+
+#include "scene_internal.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -33,6 +36,9 @@ namespace pdfem
   {
     using namespace dealii;
     namespace fs = std::filesystem;
+    using internal::make_output_folder;
+    using internal::make_triangulation;
+    using internal::Setup;
 
     namespace
     {
@@ -170,16 +176,20 @@ namespace pdfem
       }
 
       template <int dim>
-      int
-      run_scene(const Parameters::Scene &prm,
-                const RunOptions        &options,
-                MPI_Comm                 comm)
+      void
+      setup_from_prm(const Parameters::Scene &prm,
+                     const RunOptions        &options,
+                     MPI_Comm                 comm,
+                     Setup<dim>              &setup)
       {
-        const auto    total_start = clock::now();
-        const bool    root        = Utilities::MPI::this_mpi_process(comm) == 0;
-        std::ostream *progress =
-          (root && !options.quiet) ? &std::cout : nullptr;
-        std::map<std::string, double> timings;
+        const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+        setup.file      = prm.file;
+        setup.name      = prm.name;
+        setup.driver    = prm.driver;
+        setup.write_vtu = prm.output.write_vtu;
+        setup.write_nodes_csv = prm.output.write_nodes_csv;
+        setup.print_timings   = prm.output.print_timings;
+        auto &timings         = setup.timings;
 
         // ---- output folder
         std::string out_dir = options.output_directory;
@@ -187,18 +197,8 @@ namespace pdfem
           out_dir = prm.output.directory.empty() ?
                       "output-" + prm.name :
                       resolve(prm.output.directory, prm.base_dir);
-        if (root)
-          {
-            std::error_code ec;
-            fs::create_directories(out_dir, ec);
-            if (ec || !fs::is_directory(out_dir))
-              throw InputError(prm.file,
-                               "Output/Directory",
-                               "cannot create the output folder '" + out_dir +
-                                 "': " + ec.message(),
-                               "a writable folder");
-          }
-        MPI_Barrier(comm);
+        setup.out_dir = out_dir;
+        make_output_folder(out_dir, prm.file, "Output/Directory", comm);
 
         // ---- mesh (gmsh runs on rank 0 only)
         auto              start = clock::now();
@@ -225,11 +225,8 @@ namespace pdfem
         msh = Utilities::MPI::broadcast(comm, msh, 0);
 
         const Mesh::PhysicalNames names = Mesh::read_physical_names(msh, dim);
-        parallel::shared::Triangulation<dim> tria(
-          comm,
-          Triangulation<dim>::none,
-          false,
-          parallel::shared::Triangulation<dim>::partition_metis);
+        setup.tria = make_triangulation<dim>(comm);
+        auto &tria = *setup.tria;
         try
           {
             Mesh::read_msh<dim>(msh, tria);
@@ -255,8 +252,9 @@ namespace pdfem
               if (cell->at_boundary(f))
                 boundary_ids.insert(cell->face(f)->boundary_id());
           }
-        std::vector<bool> cell_is_pd(tria.n_active_cells(), false);
-        const auto       &regions = prm.mesh.pd_regions;
+        std::vector<bool> &cell_is_pd = setup.cell_is_pd;
+        cell_is_pd.assign(tria.n_active_cells(), false);
+        const auto &regions = prm.mesh.pd_regions;
         const bool        all_pd =
           std::find(regions.begin(), regions.end(), "all") != regions.end();
         const bool no_pd =
@@ -292,7 +290,7 @@ namespace pdfem
                            "regions with cells, or 'none' for pure FE");
 
         // ---- boundary conditions against the mesh
-        Coupling::Settings<dim> settings;
+        Coupling::Settings<dim> &settings = setup.settings;
         settings.source_file             = prm.file;
         settings.material.youngs_modulus = prm.material.youngs_modulus;
         settings.material.poissons_ratio = prm.material.poissons_ratio;
@@ -322,11 +320,66 @@ namespace pdfem
         settings.body_force    = prm.boundary_conditions.body_force;
         settings.linear_solver = prm.linear_solver;
 
+        setup.setup_start = start;
+      }
+    } // namespace
+
+    namespace internal
+    {
+      void
+      make_output_folder(const std::string &out_dir,
+                         const std::string &file,
+                         const std::string &parameter,
+                         MPI_Comm           comm)
+      {
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          {
+            std::error_code ec;
+            fs::create_directories(out_dir, ec);
+            if (ec || !fs::is_directory(out_dir))
+              throw InputError(file,
+                               parameter,
+                               "cannot create the output folder '" + out_dir +
+                                 "': " + ec.message(),
+                               "a writable folder");
+          }
+        MPI_Barrier(comm);
+      }
+
+      template <int dim>
+      std::unique_ptr<parallel::shared::Triangulation<dim>>
+      make_triangulation(MPI_Comm comm)
+      {
+        return std::make_unique<parallel::shared::Triangulation<dim>>(
+          comm,
+          Triangulation<dim>::none,
+          false,
+          parallel::shared::Triangulation<dim>::partition_metis);
+      }
+
+      template <int dim>
+      int
+      execute(Setup<dim> &setup, const RunOptions &options, MPI_Comm comm)
+      {
+        const auto    total_start = setup.total_start;
+        const bool    root        = Utilities::MPI::this_mpi_process(comm) == 0;
+        std::ostream *progress =
+          (root && !options.quiet) ? &std::cout : nullptr;
+        auto              &timings    = setup.timings;
+        auto              &tria       = *setup.tria;
+        auto              &cell_is_pd = setup.cell_is_pd;
+        auto              &settings   = setup.settings;
+        const std::string &out_dir    = setup.out_dir;
+        auto               start      = setup.setup_start;
+        for (const auto &note : setup.notes)
+          if (root)
+            std::cerr << "pdfem: note: " << note << std::endl;
+
         Coupling::CoupledSystem<dim> system(tria, cell_is_pd, settings);
         const Coupling::ProblemSize  size = system.size();
         timings["setup"]                  = seconds_since(start);
         if (progress)
-          *progress << "pdfem " << PDFEM_VERSION << ": " << prm.file << "\n"
+          *progress << "pdfem " << PDFEM_VERSION << ": " << setup.file << "\n"
                     << "  " << dim << "D, " << size.n_cells << " cells ("
                     << size.n_pd_cells << " PD), " << size.n_nodes << " nodes ("
                     << size.n_pd_nodes << " PD, " << size.n_interface_nodes
@@ -349,20 +402,31 @@ namespace pdfem
           for (const auto &c : component_names<dim>())
             columns.push_back("reaction_" + IO::History::column_name(set) +
                               "_" + c);
+        // The sum over a group of sets (PDLSM-FEM's RF command).
+        const auto group_reaction = [&]() {
+          Tensor<1, dim> R;
+          const auto     all = system.reactions();
+          for (const unsigned int s : setup.reaction_group)
+            R += all[s];
+          return R;
+        };
+        if (!setup.reaction_group.empty())
+          for (const auto &c : component_names<dim>())
+            columns.push_back("reaction_RF_" + c);
         columns.push_back("wall_seconds");
         IO::History history(out_dir + "/history.csv", columns, root);
 
         // ---- solve
         TrilinosWrappers::MPI::Vector u;
         system.initialize_vector(u);
-        Drivers::StaticDriver driver(prm.driver);
+        Drivers::StaticDriver driver(setup.driver);
         std::string           exit_state  = "completed", message;
         unsigned int          n_steps     = 0;
         double                output_time = 0.;
         IO::FieldOutput<dim>  field_output(out_dir,
                                           dim == 2 &&
                                             !settings.material.plane_stress,
-                                          prm.material.poissons_ratio);
+                                          settings.material.poissons_ratio);
         auto                  on_step = [&](const Drivers::StepRecord &record) {
           n_steps                         = record.step;
           const Coupling::ProblemSize s   = system.size();
@@ -377,6 +441,9 @@ namespace pdfem
           for (const auto &R : system.reactions())
             for (unsigned int c = 0; c < dim; ++c)
               row.push_back(R[c]);
+          if (!setup.reaction_group.empty())
+            for (unsigned int c = 0; c < dim; ++c)
+              row.push_back(group_reaction()[c]);
           row.push_back(seconds_since(total_start));
           history.add_row(row);
         };
@@ -397,9 +464,9 @@ namespace pdfem
         // ---- results
         start                                     = clock::now();
         const Coupling::NodalResults<dim> results = system.nodal_results(u);
-        if (prm.output.write_vtu)
+        if (setup.write_vtu)
           field_output.write(system, results, 1.);
-        if (prm.output.write_nodes_csv && root)
+        if (setup.write_nodes_csv && root)
           IO::FieldOutput<dim>::write_nodes_csv(out_dir + "/nodes.csv",
                                                 results);
         const unsigned long n_broken_bonds = system.size().n_broken_bonds;
@@ -416,8 +483,8 @@ namespace pdfem
             IO::JsonWriter json(out);
             json.begin_object();
             json.value("pdfem_version", PDFEM_VERSION);
-            json.value("scene", prm.name);
-            json.value("input_file", prm.file);
+            json.value("scene", setup.name);
+            json.value("input_file", setup.file);
             json.value("dimension", static_cast<unsigned long>(dim));
             json.value("ranks",
                        static_cast<unsigned long>(
@@ -441,7 +508,7 @@ namespace pdfem
 
             json.begin_object("final");
             json.value("load_factor",
-                       n_steps > 0 ? double(n_steps) / prm.driver.load_steps :
+                       n_steps > 0 ? double(n_steps) / setup.driver.load_steps :
                                      0.);
             const auto          comps  = component_names<dim>();
             const auto          scomps = stress_component_names<dim>();
@@ -495,6 +562,13 @@ namespace pdfem
                 json.end_object();
               }
             json.end_object();
+            if (!setup.reaction_group.empty())
+              {
+                json.begin_object("reaction_RF");
+                for (unsigned int c = 0; c < dim; ++c)
+                  json.value(comps[c], group_reaction()[c]);
+                json.end_object();
+              }
             json.end_object();
 
             json.begin_object("timings");
@@ -510,7 +584,7 @@ namespace pdfem
           {
             *progress << "Exit state: " << exit_state << ". Results in "
                       << out_dir << "/" << std::endl;
-            if (prm.output.print_timings)
+            if (setup.print_timings)
               for (const char *phase :
                    {"mesh", "setup", "assembly", "solve", "output", "total"})
                 *progress << "  " << std::setw(9) << std::left << phase
@@ -521,7 +595,13 @@ namespace pdfem
         return exit_state == "completed" ? ExitCode::completed :
                                            ExitCode::run_failure;
       }
-    } // namespace
+#define INSTANTIATE(dim)                                                \
+  template std::unique_ptr<parallel::shared::Triangulation<dim>>        \
+  make_triangulation<dim>(MPI_Comm);                                    \
+  template int execute<dim>(Setup<dim> &, const RunOptions &, MPI_Comm);
+      PDFEM_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+    } // namespace internal
 
     int
     run(const std::string &file, const RunOptions &options, MPI_Comm comm)
@@ -529,12 +609,44 @@ namespace pdfem
       const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
       try
         {
+          const auto start = clock::now();
+          if (fs::path(file).extension() == ".in")
+            {
+              // A PDLSM-FEM command file and the .lis mesh it names.
+              if (!options.overrides.empty())
+                throw InputError(file,
+                                 "--set",
+                                 "parameter overrides apply to .prm scenes",
+                                 "a .prm scene (pdfem-convert writes one)");
+              const IO::PDLSMFEMModel model = IO::read_pdlsm_fem(file);
+              if (model.dim == 2)
+                {
+                  Setup<2> setup;
+                  setup.total_start = start;
+                  internal::setup_from_pdlsm_fem<2>(model, options, comm, setup);
+                  return internal::execute<2>(setup, options, comm);
+                }
+#if PDFEM_WITH_3D
+              Setup<3> setup;
+              setup.total_start = start;
+              internal::setup_from_pdlsm_fem<3>(model, options, comm, setup);
+              return internal::execute<3>(setup, options, comm);
+#endif
+            }
           Parameters::Scene prm;
           prm.read(file, options.overrides);
           if (prm.dim == 2)
-            return run_scene<2>(prm, options, comm);
+            {
+              Setup<2> setup;
+              setup.total_start = start;
+              setup_from_prm<2>(prm, options, comm, setup);
+              return internal::execute<2>(setup, options, comm);
+            }
 #if PDFEM_WITH_3D
-          return run_scene<3>(prm, options, comm);
+          Setup<3> setup;
+          setup.total_start = start;
+          setup_from_prm<3>(prm, options, comm, setup);
+          return internal::execute<3>(setup, options, comm);
 #else
           throw InputError(file,
                            "Dimension",

@@ -41,6 +41,18 @@ run() { # case variant factor reference key prm [--set ...]
     "$("$get" get "$s" peak_memory_mb_rank0)" "$iterations" "$result" "$reference" "$error" | tee -a "$csv"
 }
 
+# The peer's own box input, read unchanged (when ../shared is beside the project).
+peer_box="$root/../shared/peer-inputs/pdlsm-fem/box/boxVpd4_static.in"
+if [ -f "$peer_box" ]; then
+  start=$(date +%s.%N)
+  "$pdfem" "$peer_box" --output "$work/peer-box" --quiet
+  wall=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.2f", e - s }')
+  s="$work/peer-box/summary.json"
+  echo "peer box input (boxVpd4_static.in): process wall $wall s, total $("$get" get "$s" timings.total) s," \
+    "peak $("$get" get "$s" peak_memory_mb_rank0) MB, max u_x $("$get" get "$s" final.max_displacement.x)," \
+    "GMRES its $(tail -n 1 "$work/peer-box/history.csv" | cut -d, -f5); peer: 194.2 s, 9028 MB" | tee "$out/static_peer_box.txt"
+fi
+
 box="$here/box_3d.prm"
 run box_3d "gmres amg-fe matrix-free" 1 5e-5 final.max_displacement.x "$box"
 run box_3d "gmres amg assembled" 1 5e-5 final.max_displacement.x "$box" \

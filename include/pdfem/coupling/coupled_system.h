@@ -41,8 +41,10 @@ namespace pdfem
   {
     /**
      * A boundary condition resolved against the mesh: a named boundary (its
-     * boundary ids) or a single node at a point, one component (0..dim-1, or
-     * dim = normal for tractions) and a muparser expression of x, y, z, t.
+     * boundary ids), a single node at a point, or an explicit list of mesh
+     * vertices (Dirichlet only; PDLSM-FEM node sets); one component
+     * (0..dim-1, or dim = normal for tractions) and a muparser expression of
+     * x, y, z, t.
      */
     template <int dim>
     struct BoundaryCondition
@@ -51,6 +53,7 @@ namespace pdfem
       std::vector<unsigned int> boundary_ids;
       bool                      at_point = false;
       dealii::Point<dim>        point;
+      std::vector<unsigned int> vertices; // triangulation vertex indices
       unsigned int              component = 0;
       std::string               expression;
     };

@@ -1,0 +1,263 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// A run from a PDLSM-FEM command file and its .lis mesh (specs/004 §4): the
+// model's elements become cells, its node sets Dirichlet sets, its face sets
+// traction boundaries.
+#include <pdfem/base/config.h>
+#include <pdfem/base/exceptions.h>
+#include <pdfem/io/pdlsm_fem_input.h>
+#include <pdfem/mesh/cracks.h>
+
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria_description.h>
+
+#include "scene_internal.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+namespace pdfem
+{
+  namespace Scene
+  {
+    namespace internal
+    {
+      using namespace dealii;
+
+      namespace
+      {
+        std::string
+        exact(const double v)
+        {
+          std::ostringstream s;
+          s << std::setprecision(17) << v;
+          return s.str();
+        }
+
+        /// PDLSM-FEM lists quads I J K L and hexes I..P counter-clockwise
+        /// (the usual FE order); deal.II numbers vertices lexicographically.
+        template <int dim>
+        std::vector<unsigned int>
+        to_dealii_order(const std::vector<unsigned int> &v)
+        {
+          if (dim == 2 && v.size() == 4)
+            return {v[0], v[1], v[3], v[2]};
+          if (dim == 3 && v.size() == 8)
+            return {v[0], v[1], v[3], v[2], v[4], v[5], v[7], v[6]};
+          return v; // triangles and tetrahedra: any order
+        }
+
+        /// Boundary ids given to the natural (traction) sets: 10, 11, ...
+        constexpr unsigned int first_traction_id = 10;
+      } // namespace
+
+      template <int dim>
+      void
+      setup_from_pdlsm_fem(const IO::PDLSMFEMModel &model,
+                           const RunOptions        &options,
+                           MPI_Comm                 comm,
+                           Setup<dim>              &setup)
+      {
+        using Solver       = IO::PDLSMFEMModel::Solver;
+        const auto &cmd    = model.command_file;
+        setup.file         = cmd;
+        setup.name         = std::filesystem::path(cmd).stem().string();
+        setup.write_vtu    = true;
+        setup.driver       = Parameters::Driver();
+        setup.print_timings = false;
+
+        // ---- what is not there yet: say so before any work
+        if (model.solver == Solver::quasi_static)
+          throw InputError(cmd,
+                           "SOLVER QUASI-STATIC",
+                           "is not supported yet (crack growth comes with the "
+                           "quasi-static driver)",
+                           "SOLVER STATIC");
+        if (model.solver == Solver::dynamic)
+          throw InputError(cmd,
+                           "SOLVER DYNAMIC",
+                           "is not supported yet (the explicit and Newmark "
+                           "drivers come later)",
+                           "SOLVER STATIC");
+        if (model.failure_criterion == 1)
+          setup.notes.push_back(
+            cmd + ": FC 1: the stress-intensity factors of a static run are "
+                  "not computed yet; the run goes on without them");
+        if (model.failure_criterion == 2)
+          setup.notes.push_back(
+            cmd + ": FC 2: the maximum bond principal stress of a static run "
+                  "is not reported yet; max_principal_stress in summary.json "
+                  "is the nodal one");
+        if (model.adaptive_factor > 0.)
+          setup.notes.push_back(cmd + ": SETSOLVING m_e: the adaptive PD "
+                                      "region applies to crack growth only");
+
+        // ---- material (mesh file line 4)
+        const double E = model.youngs_modulus, nu = model.poissons_ratio;
+        const bool plane_stress = dim == 2 && model.problem_type != 2;
+        if (!(E > 0.))
+          throw InputError(model.mesh_file,
+                           "line 4",
+                           "Young's modulus E = " + number(E) +
+                             " is not positive",
+                           "E > 0");
+        if (!(nu > -1. && (plane_stress ? nu <= 0.5 : nu < 0.5)))
+          throw InputError(model.mesh_file,
+                           "line 4",
+                           "Poisson's ratio nu = " + number(nu) +
+                             " is out of range",
+                           plane_stress ? "-1 < nu <= 0.5" : "-1 < nu < 0.5");
+
+        // ---- output folder
+        setup.out_dir = options.output_directory.empty() ?
+                          "output-" + setup.name :
+                          options.output_directory;
+        make_output_folder(setup.out_dir, cmd, "output folder", comm);
+
+        // ---- cells: vertex index = node id - 1, material id = element type
+        auto start = std::chrono::steady_clock::now();
+        std::vector<Point<dim>> vertices(model.nodes.size());
+        for (std::size_t k = 0; k < model.nodes.size(); ++k)
+          for (unsigned int d = 0; d < dim; ++d)
+            vertices[k][d] = model.nodes[k][d];
+        std::vector<CellData<dim>> cells(model.elements.size());
+        bool                       hypercubes_only = true;
+        for (std::size_t e = 0; e < model.elements.size(); ++e)
+          {
+            cells[e].vertices =
+              to_dealii_order<dim>(model.elements[e].vertices);
+            cells[e].material_id = model.elements[e].type; // 1 PD, 2 FE
+            hypercubes_only =
+              hypercubes_only &&
+              cells[e].vertices.size() == GeometryInfo<dim>::vertices_per_cell;
+          }
+        if (hypercubes_only)
+          {
+            GridTools::invert_all_negative_measure_cells(vertices, cells);
+            GridTools::consistently_order_cells(cells);
+          }
+        setup.tria = make_triangulation<dim>(comm);
+        auto &tria = *setup.tria;
+        try
+          {
+            tria.create_triangulation(vertices, cells, SubCellData());
+          }
+        catch (const std::exception &e)
+          {
+            throw InputError(model.mesh_file,
+                             "elements",
+                             "deal.II cannot build a mesh from these elements",
+                             "conforming, non-inverted Q4/T3 (2D) or H8/T4 "
+                             "(3D) elements");
+          }
+        setup.cell_is_pd.assign(tria.n_active_cells(), false);
+        for (const auto &cell : tria.active_cell_iterators())
+          setup.cell_is_pd[cell->active_cell_index()] =
+            cell->material_id() == 1;
+
+        // ---- natural sets: their faces get boundary ids 10, 11, ...
+        std::map<std::vector<unsigned int>,
+                 std::pair<typename Triangulation<dim>::active_cell_iterator,
+                           unsigned int>>
+          boundary_faces;
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->at_boundary(f))
+              {
+                std::vector<unsigned int> key;
+                for (const unsigned int v : cell->face(f)->vertex_indices())
+                  key.push_back(cell->face(f)->vertex_index(v));
+                std::sort(key.begin(), key.end());
+                boundary_faces[key] = {cell, f};
+              }
+        Coupling::Settings<dim> &settings = setup.settings;
+        for (std::size_t s = 0; s < model.natural.size(); ++s)
+          {
+            for (const auto &face : model.natural[s].faces)
+              {
+                std::vector<unsigned int> key(face);
+                std::sort(key.begin(), key.end());
+                const auto it = boundary_faces.find(key);
+                if (it == boundary_faces.end())
+                  {
+                    std::string ids;
+                    for (const unsigned int v : face)
+                      ids += (ids.empty() ? "" : " ") + std::to_string(v + 1);
+                    throw InputError(model.mesh_file,
+                                     "natural set " + std::to_string(s),
+                                     "the face (" + ids +
+                                       ") is not a boundary face of the mesh",
+                                     "faces on the boundary of the elements");
+                  }
+                it->second.first->face(it->second.second)
+                  ->set_boundary_id(first_traction_id + s);
+              }
+            Coupling::BoundaryCondition<dim> bc;
+            bc.name         = "nbc" + std::to_string(s);
+            bc.boundary_ids = {static_cast<unsigned int>(first_traction_id + s)};
+            bc.component    = dim; // normal: positive = tension, as the peer
+            bc.expression   = exact(model.natural[s].traction);
+            settings.traction.push_back(bc);
+          }
+        setup.timings["mesh"] = std::chrono::duration<double>(
+                                  std::chrono::steady_clock::now() - start)
+                                  .count();
+        setup.setup_start = std::chrono::steady_clock::now();
+
+        // ---- essential sets: node lists with one component each
+        for (std::size_t s = 0; s < model.essential.size(); ++s)
+          {
+            const auto                      &set = model.essential[s];
+            Coupling::BoundaryCondition<dim> bc;
+            bc.name       = "ebc" + std::to_string(s);
+            bc.vertices   = set.nodes;
+            bc.component  = set.component;
+            bc.expression = exact(set.value); // static: VEBC rates unused
+            settings.dirichlet.push_back(bc);
+          }
+        for (const unsigned int s : model.reaction_sets)
+          setup.reaction_group.push_back(s);
+
+        // ---- the rest of the model
+        settings.source_file             = cmd;
+        settings.material.youngs_modulus = E;
+        settings.material.poissons_ratio = nu;
+        settings.material.density        = model.density;
+        settings.material.plane_stress   = plane_stress;
+        settings.material.thickness      = 1.; // PDLSM-FEM: unit thickness
+        settings.horizon_factor          = model.horizon_factor;
+        settings.weight_factor           = model.weight_factor;
+        settings.fe_nodes_in_families    = model.fe_nodes_in_families;
+        std::vector<std::vector<std::array<double, 3>>> cracks(
+          model.cracks.begin(), model.cracks.end());
+        settings.cracks = Mesh::make_cracks<dim>(cracks);
+        if (!(settings.horizon_factor >= 1.))
+          throw InputError(cmd,
+                           "SETSOLVING",
+                           "the horizon factor m = " +
+                             number(settings.horizon_factor) +
+                             " is smaller than 1",
+                           "m >= 1");
+        // 2D: sparse LU, as the peer; 3D: the matrix-free iterative solver,
+        // tight enough for 1e-10 on the exact box solution.
+        if (dim == 3)
+          {
+            settings.linear_solver.type           = "gmres";
+            settings.linear_solver.preconditioner = "amg fe";
+            settings.linear_solver.tolerance      = 1e-12;
+            setup.driver.residual_tolerance       = 1e-11;
+          }
+      }
+
+#define INSTANTIATE(dim)                                                     \
+  template void setup_from_pdlsm_fem<dim>(const IO::PDLSMFEMModel &,         \
+                                          const RunOptions &,                \
+                                          MPI_Comm,                          \
+                                          Setup<dim> &);
+      PDFEM_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+    } // namespace internal
+  }   // namespace Scene
+} // namespace pdfem

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Private to the scene module: a run set up from any input (a pdfem .prm
+// scene or a PDLSM-FEM command file), and the part that executes it.
+#ifndef PDFEM_SOURCE_SCENE_SCENE_INTERNAL_H
+#define PDFEM_SOURCE_SCENE_SCENE_INTERNAL_H
+
+#include <pdfem/coupling/coupled_system.h>
+#include <pdfem/io/parameters.h>
+#include <pdfem/scene/scene.h>
+
+#include <deal.II/distributed/shared_tria.h>
+
+#include <chrono>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pdfem
+{
+  namespace IO
+  {
+    struct PDLSMFEMModel;
+  }
+
+  namespace Scene
+  {
+    namespace internal
+    {
+      /** Everything a run needs, whatever the input format. */
+      template <int dim>
+      struct Setup
+      {
+        std::string file;    // the input file, for messages and summary.json
+        std::string name;    // its stem
+        std::string out_dir; // created already
+        std::unique_ptr<dealii::parallel::shared::Triangulation<dim>> tria;
+        std::vector<bool>                                             cell_is_pd;
+        Coupling::Settings<dim>                                       settings;
+        Parameters::Driver                                            driver;
+        bool                     write_vtu       = true;
+        bool                     write_nodes_csv = false;
+        bool                     print_timings   = false;
+        /// Dirichlet sets whose reactions are also summed as "RF" (the
+        /// reaction-force sets of a PDLSM-FEM command file).
+        std::vector<unsigned int> reaction_group;
+        /// Remarks printed on stderr before the run (unsupported options
+        /// that do not change the result, and the like).
+        std::vector<std::string>                           notes;
+        std::map<std::string, double>                      timings;
+        std::chrono::steady_clock::time_point              total_start;
+        std::chrono::steady_clock::time_point              setup_start;
+      };
+
+      /// Create @p out_dir (rank 0), or throw InputError naming @p file and
+      /// @p parameter.
+      void
+      make_output_folder(const std::string &out_dir,
+                         const std::string &file,
+                         const std::string &parameter,
+                         MPI_Comm           comm);
+
+      /// An empty shared triangulation partitioned by METIS.
+      template <int dim>
+      std::unique_ptr<dealii::parallel::shared::Triangulation<dim>>
+      make_triangulation(MPI_Comm comm);
+
+      /// Build the run of a PDLSM-FEM model (pdlsm_fem_scene.cc).
+      template <int dim>
+      void
+      setup_from_pdlsm_fem(const IO::PDLSMFEMModel &model,
+                           const RunOptions        &options,
+                           MPI_Comm                 comm,
+                           Setup<dim>              &setup);
+
+      /// Set up the coupled system, run the driver, write every output.
+      template <int dim>
+      int
+      execute(Setup<dim> &setup, const RunOptions &options, MPI_Comm comm);
+    } // namespace internal
+  }   // namespace Scene
+} // namespace pdfem
+
+#endif
