@@ -10,13 +10,13 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria_description.h>
 
-#include "scene_internal.h"
-
 #include <algorithm>
 #include <filesystem>
 #include <iomanip>
 #include <map>
 #include <sstream>
+
+#include "scene_internal.h"
 
 namespace pdfem
 {
@@ -60,13 +60,34 @@ namespace pdfem
                            MPI_Comm                 comm,
                            Setup<dim>              &setup)
       {
-        using Solver       = IO::PDLSMFEMModel::Solver;
-        const auto &cmd    = model.command_file;
-        setup.file         = cmd;
-        setup.name         = std::filesystem::path(cmd).stem().string();
-        setup.write_vtu    = true;
-        setup.driver       = Parameters::Driver();
-        setup.print_timings = false;
+        using Solver    = IO::PDLSMFEMModel::Solver;
+        const auto &cmd = model.command_file;
+        setup.file      = cmd;
+        setup.name      = std::filesystem::path(cmd).stem().string();
+        setup.driver    = Parameters::Driver();
+
+        // ---- command-line overrides: only the output ones make sense here
+        for (const auto &[path, value] : options.overrides)
+          {
+            const bool on = value == "true";
+            if (!on && value != "false")
+              throw InputError("--set",
+                               path,
+                               "'" + value + "' is not a boolean",
+                               "true or false");
+            if (path == "Output/Write vtu")
+              setup.write_vtu = on;
+            else if (path == "Output/Write nodes csv")
+              setup.write_nodes_csv = on;
+            else if (path == "Output/Print timings")
+              setup.print_timings = on;
+            else
+              throw InputError("--set",
+                               path,
+                               "cannot be set for a PDLSM-FEM command file",
+                               "Output/Write vtu, Output/Write nodes csv, "
+                               "Output/Print timings");
+          }
 
         // ---- what is not there yet: say so before any work
         if (model.solver == Solver::quasi_static)
@@ -96,7 +117,7 @@ namespace pdfem
 
         // ---- material (mesh file line 4)
         const double E = model.youngs_modulus, nu = model.poissons_ratio;
-        const bool plane_stress = dim == 2 && model.problem_type != 2;
+        const bool   plane_stress = dim == 2 && model.problem_type != 2;
         if (!(E > 0.))
           throw InputError(model.mesh_file,
                            "line 4",
@@ -117,7 +138,7 @@ namespace pdfem
         make_output_folder(setup.out_dir, cmd, "output folder", comm);
 
         // ---- cells: vertex index = node id - 1, material id = element type
-        auto start = std::chrono::steady_clock::now();
+        auto                    start = std::chrono::steady_clock::now();
         std::vector<Point<dim>> vertices(model.nodes.size());
         for (std::size_t k = 0; k < model.nodes.size(); ++k)
           for (unsigned int d = 0; d < dim; ++d)
@@ -196,9 +217,10 @@ namespace pdfem
               }
             Coupling::BoundaryCondition<dim> bc;
             bc.name         = "nbc" + std::to_string(s);
-            bc.boundary_ids = {static_cast<unsigned int>(first_traction_id + s)};
-            bc.component    = dim; // normal: positive = tension, as the peer
-            bc.expression   = exact(model.natural[s].traction);
+            bc.boundary_ids = {
+              static_cast<unsigned int>(first_traction_id + s)};
+            bc.component  = dim; // normal: positive = tension, as the peer
+            bc.expression = exact(model.natural[s].traction);
             settings.traction.push_back(bc);
           }
         setup.timings["mesh"] = std::chrono::duration<double>(
@@ -251,10 +273,10 @@ namespace pdfem
           }
       }
 
-#define INSTANTIATE(dim)                                                     \
-  template void setup_from_pdlsm_fem<dim>(const IO::PDLSMFEMModel &,         \
-                                          const RunOptions &,                \
-                                          MPI_Comm,                          \
+#define INSTANTIATE(dim)                                             \
+  template void setup_from_pdlsm_fem<dim>(const IO::PDLSMFEMModel &, \
+                                          const RunOptions &,        \
+                                          MPI_Comm,                  \
                                           Setup<dim> &);
       PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

@@ -7,12 +7,10 @@
 #include <pdfem/io/history.h>
 #include <pdfem/io/json_writer.h>
 #include <pdfem/io/parameters.h>
+#include <pdfem/io/pdlsm_fem_input.h>
 #include <pdfem/mesh/cracks.h>
 #include <pdfem/mesh/gmsh_input.h>
-#include <pdfem/io/pdlsm_fem_input.h>
 #include <pdfem/scene/scene.h>
-
-#include "scene_internal.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -28,6 +26,7 @@
 #include <map>
 #include <set>
 
+#include "scene_internal.h"
 #include <sys/resource.h>
 
 namespace pdfem
@@ -182,11 +181,11 @@ namespace pdfem
                      MPI_Comm                 comm,
                      Setup<dim>              &setup)
       {
-        const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
-        setup.file      = prm.file;
-        setup.name      = prm.name;
-        setup.driver    = prm.driver;
-        setup.write_vtu = prm.output.write_vtu;
+        const bool root       = Utilities::MPI::this_mpi_process(comm) == 0;
+        setup.file            = prm.file;
+        setup.name            = prm.name;
+        setup.driver          = prm.driver;
+        setup.write_vtu       = prm.output.write_vtu;
         setup.write_nodes_csv = prm.output.write_nodes_csv;
         setup.print_timings   = prm.output.print_timings;
         auto &timings         = setup.timings;
@@ -225,8 +224,8 @@ namespace pdfem
         msh = Utilities::MPI::broadcast(comm, msh, 0);
 
         const Mesh::PhysicalNames names = Mesh::read_physical_names(msh, dim);
-        setup.tria = make_triangulation<dim>(comm);
-        auto &tria = *setup.tria;
+        setup.tria                      = make_triangulation<dim>(comm);
+        auto &tria                      = *setup.tria;
         try
           {
             Mesh::read_msh<dim>(msh, tria);
@@ -255,7 +254,7 @@ namespace pdfem
         std::vector<bool> &cell_is_pd = setup.cell_is_pd;
         cell_is_pd.assign(tria.n_active_cells(), false);
         const auto &regions = prm.mesh.pd_regions;
-        const bool        all_pd =
+        const bool  all_pd =
           std::find(regions.begin(), regions.end(), "all") != regions.end();
         const bool no_pd =
           regions.empty() ||
@@ -291,10 +290,10 @@ namespace pdfem
 
         // ---- boundary conditions against the mesh
         Coupling::Settings<dim> &settings = setup.settings;
-        settings.source_file             = prm.file;
-        settings.material.youngs_modulus = prm.material.youngs_modulus;
-        settings.material.poissons_ratio = prm.material.poissons_ratio;
-        settings.material.density        = prm.material.density;
+        settings.source_file              = prm.file;
+        settings.material.youngs_modulus  = prm.material.youngs_modulus;
+        settings.material.poissons_ratio  = prm.material.poissons_ratio;
+        settings.material.density         = prm.material.density;
         settings.material.plane_stress =
           dim == 2 &&
           prm.material.plane == Parameters::PlaneModel::plane_stress;
@@ -595,9 +594,9 @@ namespace pdfem
         return exit_state == "completed" ? ExitCode::completed :
                                            ExitCode::run_failure;
       }
-#define INSTANTIATE(dim)                                                \
-  template std::unique_ptr<parallel::shared::Triangulation<dim>>        \
-  make_triangulation<dim>(MPI_Comm);                                    \
+#define INSTANTIATE(dim)                                         \
+  template std::unique_ptr<parallel::shared::Triangulation<dim>> \
+               make_triangulation<dim>(MPI_Comm);                \
   template int execute<dim>(Setup<dim> &, const RunOptions &, MPI_Comm);
       PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
@@ -613,17 +612,15 @@ namespace pdfem
           if (fs::path(file).extension() == ".in")
             {
               // A PDLSM-FEM command file and the .lis mesh it names.
-              if (!options.overrides.empty())
-                throw InputError(file,
-                                 "--set",
-                                 "parameter overrides apply to .prm scenes",
-                                 "a .prm scene (pdfem-convert writes one)");
               const IO::PDLSMFEMModel model = IO::read_pdlsm_fem(file);
               if (model.dim == 2)
                 {
                   Setup<2> setup;
                   setup.total_start = start;
-                  internal::setup_from_pdlsm_fem<2>(model, options, comm, setup);
+                  internal::setup_from_pdlsm_fem<2>(model,
+                                                    options,
+                                                    comm,
+                                                    setup);
                   return internal::execute<2>(setup, options, comm);
                 }
 #if PDFEM_WITH_3D

@@ -35,21 +35,21 @@ namespace pdfem
         std::string name;    // its stem
         std::string out_dir; // created already
         std::unique_ptr<dealii::parallel::shared::Triangulation<dim>> tria;
-        std::vector<bool>                                             cell_is_pd;
-        Coupling::Settings<dim>                                       settings;
-        Parameters::Driver                                            driver;
-        bool                     write_vtu       = true;
-        bool                     write_nodes_csv = false;
-        bool                     print_timings   = false;
+        std::vector<bool>       cell_is_pd;
+        Coupling::Settings<dim> settings;
+        Parameters::Driver      driver;
+        bool                    write_vtu       = true;
+        bool                    write_nodes_csv = false;
+        bool                    print_timings   = false;
         /// Dirichlet sets whose reactions are also summed as "RF" (the
         /// reaction-force sets of a PDLSM-FEM command file).
         std::vector<unsigned int> reaction_group;
         /// Remarks printed on stderr before the run (unsupported options
         /// that do not change the result, and the like).
-        std::vector<std::string>                           notes;
-        std::map<std::string, double>                      timings;
-        std::chrono::steady_clock::time_point              total_start;
-        std::chrono::steady_clock::time_point              setup_start;
+        std::vector<std::string>              notes;
+        std::map<std::string, double>         timings;
+        std::chrono::steady_clock::time_point total_start;
+        std::chrono::steady_clock::time_point setup_start;
       };
 
       /// Create @p out_dir (rank 0), or throw InputError naming @p file and
