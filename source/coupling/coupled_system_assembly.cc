@@ -614,15 +614,15 @@ namespace pdfem
       double *fv = free_f_ext.trilinos_vector()[0];
       for (const unsigned int lid : s.held_lid)
         rv[lid] = fv[lid] = 0.;
-      s.f_ext_norm = free_f_ext.l2_norm();
+      s.force_scale = std::max(free_f_ext.l2_norm(), s.f_int.l2_norm());
       return r.l2_norm();
     }
 
     template <int dim>
     double
-    CoupledSystem<dim>::external_force_norm() const
+    CoupledSystem<dim>::force_scale() const
     {
-      return impl->f_ext_norm;
+      return impl->force_scale;
     }
 
     template <int dim>
@@ -659,7 +659,7 @@ namespace pdfem
                                                double,                         \
                                                Vector &,                       \
                                                bool);                          \
-  template double CoupledSystem<dim>::external_force_norm() const;             \
+  template double CoupledSystem<dim>::force_scale() const;                     \
   template unsigned int CoupledSystem<dim>::solve_linear(Vector &,             \
                                                          const Vector &);
     PDFEM_INSTANTIATE(INSTANTIATE)

@@ -192,7 +192,7 @@ namespace pdfem
       mutable dealii::TrilinosWrappers::MPI::Vector x_ghosted, x_masked;
       dealii::TrilinosWrappers::MPI::Vector         f_int, f_ext, u_ghosted;
       Solvers::LinearSolver                         solver;
-      double                                        f_ext_norm = 0.;
+      double                                        force_scale = 0.;
       std::vector<dealii::Tensor<1, dim>>           last_reactions;
       std::size_t                                   n_matrix_entries = 0;
     };

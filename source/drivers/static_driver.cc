@@ -6,7 +6,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <iomanip>
 #include <sstream>
 
 namespace pdfem
@@ -31,13 +30,11 @@ namespace pdfem
     void
     StaticDriver::run(SystemInterface                               &system,
                       SystemInterface::Vector                       &u,
-                      const std::function<void(const StepRecord &)> &on_step,
-                      std::ostream                                  *progress)
+                      const std::function<void(const StepRecord &)> &on_step)
     {
       using clock = std::chrono::steady_clock;
       SystemInterface::Vector r, du;
-      const auto              run_start = clock::now();
-      const unsigned int      n_steps   = settings.load_steps;
+      const unsigned int      n_steps = settings.load_steps;
       for (unsigned int step = 1; step <= n_steps; ++step)
         {
           const double t = double(step) / n_steps;
@@ -59,9 +56,8 @@ namespace pdfem
                                  "the residual is not finite at load step " +
                                    std::to_string(step));
               if (it == 0)
-                reference = std::max(norm, system.external_force_norm());
-              const double scale =
-                std::max(reference, system.external_force_norm());
+                reference = std::max(norm, system.force_scale());
+              const double scale = std::max(reference, system.force_scale());
               record.relative_residual = scale > 0. ? norm / scale : norm;
               if (norm <= settings.residual_tolerance * scale ||
                   (scale == 0. && norm == 0.))
@@ -81,20 +77,6 @@ namespace pdfem
               ++record.newton_iterations;
             }
           on_step(record);
-
-          if (progress)
-            {
-              const double elapsed = seconds_since(run_start);
-              const double left    = elapsed / step * (n_steps - step);
-              *progress << "Step " << std::setw(4) << step << "/" << n_steps
-                        << "  t = " << std::setw(8) << std::setprecision(4) << t
-                        << "  iterations " << record.newton_iterations
-                        << "  |r|/|f| = " << std::scientific
-                        << std::setprecision(2) << record.relative_residual
-                        << std::defaultfloat << "  left ~"
-                        << std::setprecision(2) << std::fixed << left << " s"
-                        << std::defaultfloat << std::endl;
-            }
         }
     }
   } // namespace Drivers

@@ -515,7 +515,9 @@ namespace pdfem
                         "1e-9",
                         Double(0.),
                         "Equilibrium iterations stop when |r| <= tol * "
-                        "max(|f_ext|, |r_0|).");
+                        "max(|r_0|, |f_ext|, |f_int|); |f_int| includes the "
+                        "reactions, the force scale of displacement-driven "
+                        "runs.");
       prm.declare_entry("Max iterations",
                         "10",
                         Integer(1),

@@ -21,6 +21,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -445,10 +446,28 @@ namespace pdfem
               row.push_back(group_reaction()[c]);
           row.push_back(seconds_since(total_start));
           history.add_row(row);
+          if (progress)
+            {
+              // step, load, iterations, broken bonds, time left
+              const unsigned int n = setup.driver.load_steps;
+              const double       spent = seconds_since(setup.setup_start);
+              *progress << "Step " << std::setw(4) << record.step << "/" << n
+                        << "  t = " << std::setw(6) << std::setprecision(4)
+                        << record.load_factor << "  iterations "
+                        << record.newton_iterations << " (linear "
+                        << record.linear_iterations
+                        << ")  |r|/|f| = " << std::scientific
+                        << std::setprecision(2) << record.relative_residual
+                        << std::defaultfloat << "  broken bonds "
+                        << s.n_broken_bonds << "  left ~" << std::fixed
+                        << std::setprecision(1)
+                        << spent / record.step * (n - record.step) << " s"
+                        << std::defaultfloat << std::endl;
+            }
         };
         try
           {
-            driver.run(system, u, on_step, progress);
+            driver.run(system, u, on_step);
           }
         catch (const RunFailure &e)
           {

@@ -155,7 +155,7 @@ namespace pdfem
                Vector       &r,
                bool          assemble_tangent) override;
       double
-      external_force_norm() const override;
+      force_scale() const override;
       unsigned int
       solve_linear(Vector &du, const Vector &r) override;
 

@@ -6,7 +6,6 @@
 #include <pdfem/io/parameters.h>
 
 #include <functional>
-#include <ostream>
 
 namespace pdfem
 {
@@ -20,7 +19,7 @@ namespace pdfem
       double       load_factor       = 0.;
       unsigned int newton_iterations = 0;
       unsigned int linear_iterations = 0;
-      /// |r| / max(|f_ext|, |r_0|) at convergence.
+      /// |r| / max(|r_0|, |f_ext|, |f_int|) at convergence.
       double relative_residual = 0.;
     };
 
@@ -35,7 +34,10 @@ namespace pdfem
      * Static equilibrium: the load factor t goes from 0 to 1 in `Load steps`
      * equal increments; at each, the prescribed DoFs are set to their values
      * at t and Newton iterations K du = r, u += du run until
-     * |r| <= tol * max(|f_ext|, |r_0|). For the linear coupled PDLSM-FE
+     * |r| <= tol * max(|r_0|, |f_ext|, |f_int|); |f_int| includes the
+     * reactions, the force scale of displacement-driven problems (a step
+     * that starts in equilibrium has |r_0| and |f_ext| at round-off). For
+     * the linear coupled PDLSM-FE
      * problem one iteration is exact; the second residual only confirms it.
      * No convergence in `Max iterations` throws RunFailure("diverged").
      */
@@ -45,13 +47,11 @@ namespace pdfem
       explicit StaticDriver(const Parameters::Driver &settings);
 
       /// @p u: initial guess in, solution out. @p on_step is called after
-      /// each converged step (before the next one changes anything);
-      /// @p progress (may be null) gets one line per step.
+      /// each converged step (before the next one changes anything).
       void
       run(SystemInterface                               &system,
           SystemInterface::Vector                       &u,
-          const std::function<void(const StepRecord &)> &on_step,
-          std::ostream                                  *progress);
+          const std::function<void(const StepRecord &)> &on_step);
 
       const DriverTimings &
       timings() const

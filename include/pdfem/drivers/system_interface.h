@@ -49,9 +49,10 @@ namespace pdfem
       virtual double
       residual(const Vector &u, double t, Vector &r, bool assemble_tangent) = 0;
 
-      /// |f_ext| of the last residual() call (free DoFs).
+      /// The force scale of the last residual() call: max(|f_ext| over the
+      /// free DoFs, |f_int| over all DoFs, reactions included).
       virtual double
-      external_force_norm() const = 0;
+      force_scale() const = 0;
 
       /// Solve K du = r with the last assembled K; returns the iterations.
       virtual unsigned int
