@@ -21,35 +21,7 @@ namespace pdfem
   {
     using namespace dealii;
 
-    namespace
-    {
-      template <int dim>
-      std::vector<std::string>
-      stress_names()
-      {
-        if constexpr (dim == 2)
-          return {"xx", "yy", "xy"};
-        else
-          return {"xx", "yy", "zz", "xy", "yz", "xz"};
-      }
-
-      template <int dim>
-      double
-      stress_component(const SymmetricTensor<2, dim> &s, const unsigned int c)
-      {
-        if constexpr (dim == 2)
-          {
-            const unsigned int i[3] = {0, 1, 0}, j[3] = {0, 1, 1};
-            return s[i[c]][j[c]];
-          }
-        else
-          {
-            const unsigned int i[6] = {0, 1, 2, 0, 1, 0},
-                               j[6] = {0, 1, 2, 1, 2, 2};
-            return s[i[c]][j[c]];
-          }
-      }
-    } // namespace
+    using Coupling::stress_component;
 
     template <int dim>
     FieldOutput<dim>::FieldOutput(const std::string &directory,
@@ -87,7 +59,7 @@ namespace pdfem
           ++scalar_cell;
         }
 
-      const auto                  names = stress_names<dim>();
+      const auto names = Coupling::stress_component_names<dim>();
       std::vector<Vector<double>> stress(names.size(),
                                          Vector<double>(n_scalar));
       Vector<double> sigma_zz(n_scalar), s1(n_scalar), s_min(n_scalar),
@@ -188,7 +160,8 @@ namespace pdfem
         out << (d ? "," : "") << axis[d];
       for (unsigned int d = 0; d < dim; ++d)
         out << ",u" << axis[d];
-      for (const auto &n : stress_names<dim>())
+      const auto stress_names = Coupling::stress_component_names<dim>();
+      for (const auto &n : stress_names)
         out << ",s" << n;
       out << ",damage,kind\n";
       out << std::setprecision(std::numeric_limits<double>::max_digits10);
@@ -198,7 +171,7 @@ namespace pdfem
             out << (d ? "," : "") << r.position[k][d];
           for (unsigned int d = 0; d < dim; ++d)
             out << "," << r.displacement[k][d];
-          for (unsigned int c = 0; c < stress_names<dim>().size(); ++c)
+          for (unsigned int c = 0; c < stress_names.size(); ++c)
             out << "," << stress_component(r.stress[k], c);
           out << "," << r.damage[k] << "," << int(r.kind[k]) << "\n";
         }

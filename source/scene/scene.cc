@@ -36,6 +36,9 @@ namespace pdfem
   {
     using namespace dealii;
     namespace fs = std::filesystem;
+    using Coupling::component_names;
+    using Coupling::stress_component;
+    using Coupling::stress_component_names;
     using internal::make_output_folder;
     using internal::make_triangulation;
     using internal::Setup;
@@ -146,33 +149,6 @@ namespace pdfem
             result.push_back(bc);
           }
         return result;
-      }
-
-      template <int dim>
-      std::vector<std::string>
-      component_names()
-      {
-        return dim == 2 ? std::vector<std::string>{"x", "y"} :
-                          std::vector<std::string>{"x", "y", "z"};
-      }
-
-      template <int dim>
-      std::vector<std::string>
-      stress_component_names()
-      {
-        return dim == 2 ?
-                 std::vector<std::string>{"xx", "yy", "xy"} :
-                 std::vector<std::string>{"xx", "yy", "zz", "xy", "yz", "xz"};
-      }
-
-      template <int dim>
-      double
-      stress_component(const SymmetricTensor<2, dim> &s, const unsigned int c)
-      {
-        static const unsigned int i2[3] = {0, 1, 0}, j2[3] = {0, 1, 1};
-        static const unsigned int i3[6] = {0, 1, 2, 0, 1, 0},
-                                  j3[6] = {0, 1, 2, 1, 2, 2};
-        return dim == 2 ? s[i2[c]][j2[c]] : s[i3[c]][j3[c]];
       }
 
       template <int dim>

@@ -108,6 +108,48 @@ namespace pdfem
       std::vector<std::uint8_t> kind;
     };
 
+    /// Names of the displacement components: x, y[, z].
+    template <int dim>
+    inline std::vector<std::string>
+    component_names()
+    {
+      if constexpr (dim == 2)
+        return {"x", "y"};
+      else
+        return {"x", "y", "z"};
+    }
+
+    /// Names of the stress components in output order: xx, yy, xy (2D);
+    /// xx, yy, zz, xy, yz, xz (3D). Used by summary.json, VTU and nodes.csv.
+    template <int dim>
+    inline std::vector<std::string>
+    stress_component_names()
+    {
+      if constexpr (dim == 2)
+        return {"xx", "yy", "xy"};
+      else
+        return {"xx", "yy", "zz", "xy", "yz", "xz"};
+    }
+
+    /// Component @p c of @p s, in the order of stress_component_names().
+    template <int dim>
+    inline double
+    stress_component(const dealii::SymmetricTensor<2, dim> &s,
+                     const unsigned int                     c)
+    {
+      if constexpr (dim == 2)
+        {
+          constexpr unsigned int i[3] = {0, 1, 0}, j[3] = {0, 1, 1};
+          return s[i[c]][j[c]];
+        }
+      else
+        {
+          constexpr unsigned int i[6] = {0, 1, 2, 0, 1, 0},
+                                 j[6] = {0, 1, 2, 1, 2, 2};
+          return s[i[c]][j[c]];
+        }
+    }
+
     /**
      * The coupled PDLSM-FE problem on one mesh, one DoF numbering and one
      * Trilinos matrix (Liu & Xin, EFM 2021, eq. 26-27; specs/004 §1.3):
