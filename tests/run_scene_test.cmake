@@ -3,6 +3,7 @@
 # Directives read from the scene's comments:
 #   # CHECK: <json key> = <value> rel|abs <tol>   a value in summary.json
 #   # CHECK: <json key> > <value>                  (or <) a bound on a value in summary.json
+#   # NONDECREASING: <history.csv column>         the column never decreases
 #   # EXIT-STATE: <state>                          expected exit_state (default completed)
 #   # EXPECT-ERROR: <text>                         bad input: exit status 2 and one line
 #                                                  "pdfem: error: ..." containing <text>
@@ -14,9 +15,10 @@ set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
 set(ENV{OMPI_ALLOW_RUN_AS_ROOT_CONFIRM} 1)
 set(ENV{OMPI_MCA_rmaps_base_oversubscribe} 1)
 
-file(STRINGS "${PRM}" directives REGEX "^# (CHECK|EXIT-STATE|EXPECT-ERROR|MPI|REQUIRES):")
+file(STRINGS "${PRM}" directives REGEX "^# (CHECK|NONDECREASING|EXIT-STATE|EXPECT-ERROR|MPI|REQUIRES):")
 get_filename_component(scene_dir "${PRM}" DIRECTORY)
 set(checks "")
+set(monotone "")
 set(exit_state "completed")
 set(expect_error "")
 set(n_ranks 0)
@@ -25,6 +27,8 @@ foreach(line IN LISTS directives)
     list(APPEND checks "${CMAKE_MATCH_1}|${CMAKE_MATCH_2}|${CMAKE_MATCH_3}|${CMAKE_MATCH_4}")
   elseif(line MATCHES "^# CHECK: *([^ ]+) *([<>]) *([^ ]+) *$")
     list(APPEND checks "${CMAKE_MATCH_1}|${CMAKE_MATCH_3}|${CMAKE_MATCH_2}|")
+  elseif(line MATCHES "^# NONDECREASING: *([^ ]+)")
+    list(APPEND monotone "${CMAKE_MATCH_1}")
   elseif(line MATCHES "^# EXIT-STATE: *(.+)$")
     string(STRIP "${CMAKE_MATCH_1}" exit_state)
   elseif(line MATCHES "^# EXPECT-ERROR: *(.+)$")
@@ -89,6 +93,13 @@ function(run_and_check tag launcher)
       execute_process(COMMAND "${CHECKER}" value "${WORK}/${tag}/summary.json" ${key} ${value} ${kind} ${tol}
         RESULT_VARIABLE crc)
     endif()
+    if(crc)
+      set(failed 1)
+    endif()
+  endforeach()
+  foreach(column IN LISTS monotone)
+    execute_process(COMMAND "${CHECKER}" nondecreasing "${WORK}/${tag}/history.csv" ${column}
+      RESULT_VARIABLE crc)
     if(crc)
       set(failed 1)
     endif()

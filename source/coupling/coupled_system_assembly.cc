@@ -589,8 +589,8 @@ namespace pdfem
       Impl &s = *impl;
       s.compute_internal_force(u);
       s.assemble_external(t);
-      if (assemble_tangent && !s.matrix_free)
-        s.assemble_tangent();
+      // Assembled on demand: the last residual of a step only checks.
+      s.tangent_stale = assemble_tangent && !s.matrix_free;
 
       // Reactions: the force the supports exert, f_int - f_ext, summed over
       // each set's nodes (every component), for the 2D thickness.
@@ -641,6 +641,11 @@ namespace pdfem
             r,
             s.auxiliary,
             [&s](Vector &w, const Vector &t) { s.apply_block_jacobi(w, t); });
+        }
+      if (s.tangent_stale)
+        {
+          s.assemble_tangent();
+          s.tangent_stale = false;
         }
       return s.solver.solve(s.matrix, du, r);
     }

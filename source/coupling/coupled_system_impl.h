@@ -153,6 +153,7 @@ namespace pdfem
       std::vector<double>                            pd_volume; // PD cells
       std::vector<double>                            horizon;
       std::vector<std::uint8_t>                      is_pd, is_fe;
+      std::vector<std::uint8_t>                      no_fail; // bonds kept
       std::vector<unsigned int>                      n_fe_cells;
       std::vector<std::array<global_dof_index, dim>> node_dof;
       std::vector<unsigned int>                      node_of_scalar;
@@ -193,8 +194,9 @@ namespace pdfem
       dealii::TrilinosWrappers::MPI::Vector         f_int, f_ext, u_ghosted;
       Solvers::LinearSolver                         solver;
       double                                        force_scale = 0.;
-      std::vector<dealii::Tensor<1, dim>>           last_reactions;
-      std::size_t                                   n_matrix_entries = 0;
+      bool tangent_stale = false; // residual() asked, solve_linear builds
+      std::vector<dealii::Tensor<1, dim>> last_reactions;
+      std::size_t                         n_matrix_entries = 0;
     };
   } // namespace Coupling
 } // namespace pdfem

@@ -30,15 +30,19 @@ namespace pdfem
 
       // Each quantity is summed over the ranks that own its contributions.
       std::vector<double> disp(n * dim, 0.), stress(n * n_stress, 0.),
-        count(n, 0.), damage(n, 0.);
+        gradient(n * dim * dim, 0.), count(n, 0.), damage(n, 0.);
       for (const unsigned int k : s.owned_nodes)
         for (unsigned int c = 0; c < dim; ++c)
           disp[k * dim + c] = ug[s.node_dof[k][c]];
 
       auto add_stress = [&](const unsigned int             k,
-                            const SymmetricTensor<2, dim> &sigma) {
+                            const SymmetricTensor<2, dim> &sigma,
+                            const Tensor<2, dim>          &grad_u) {
         for (unsigned int c = 0; c < n_stress; ++c)
           stress[k * n_stress + c] += sigma.access_raw_entry(c);
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            gradient[(k * dim + i) * dim + j] += grad_u[i][j];
         count[k] += 1.;
       };
 
@@ -67,7 +71,7 @@ namespace pdfem
           damage[k] =
             last > first ? 1. - double(n_intact) / (last - first) : 0.;
           if (!s.decoupled[o])
-            add_stress(k, s.pdlsm.stress(grad_u));
+            add_stress(k, s.pdlsm.stress(grad_u), grad_u);
         }
 
       // FE cells: Gauss-point stresses extrapolated to the vertices (the
@@ -116,14 +120,21 @@ namespace pdfem
           for (const unsigned int v : cell->vertex_indices())
             {
               SymmetricTensor<2, dim> sigma;
+              Tensor<2, dim>          grad_u;
               for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
-                sigma += X(v, q) * sigma_q[q];
-              add_stress(s.vertex_to_node[cell->vertex_index(v)], sigma);
+                {
+                  sigma += X(v, q) * sigma_q[q];
+                  grad_u += X(v, q) * grads[q];
+                }
+              add_stress(s.vertex_to_node[cell->vertex_index(v)],
+                         sigma,
+                         grad_u);
             }
         }
 
       Utilities::MPI::sum(disp, s.comm, disp);
       Utilities::MPI::sum(stress, s.comm, stress);
+      Utilities::MPI::sum(gradient, s.comm, gradient);
       Utilities::MPI::sum(count, s.comm, count);
       Utilities::MPI::sum(damage, s.comm, damage);
 
@@ -131,6 +142,7 @@ namespace pdfem
       results.position = s.x;
       results.displacement.resize(n);
       results.stress.resize(n);
+      results.displacement_gradient.resize(n);
       results.damage = damage;
       results.kind.resize(n);
       for (unsigned int k = 0; k < n; ++k)
@@ -138,9 +150,15 @@ namespace pdfem
           for (unsigned int c = 0; c < dim; ++c)
             results.displacement[k][c] = disp[k * dim + c];
           if (count[k] > 0.)
-            for (unsigned int c = 0; c < n_stress; ++c)
-              results.stress[k].access_raw_entry(c) =
-                stress[k * n_stress + c] / count[k];
+            {
+              for (unsigned int c = 0; c < n_stress; ++c)
+                results.stress[k].access_raw_entry(c) =
+                  stress[k * n_stress + c] / count[k];
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = 0; j < dim; ++j)
+                  results.displacement_gradient[k][i][j] =
+                    gradient[(k * dim + i) * dim + j] / count[k];
+            }
           results.kind[k] = (s.is_pd[k] ? 1 : 0) + (s.is_fe[k] ? 2 : 0);
         }
       return results;

@@ -104,6 +104,10 @@ namespace pdfem
       pd_volume.assign(n_nodes, 0.);
       is_pd.assign(n_nodes, 0);
       is_fe.assign(n_nodes, 0);
+      no_fail.assign(n_nodes, 0);
+      for (const unsigned int v : settings.no_fail_vertices)
+        if (v < vertex_to_node.size() && vertex_to_node[v] != invalid)
+          no_fail[vertex_to_node[v]] = 1;
       n_fe_cells.assign(n_nodes, 0);
       node_dof.resize(n_nodes);
       node_of_scalar.assign(node_dofs_handler.n_dofs(), invalid);

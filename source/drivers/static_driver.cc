@@ -23,6 +23,57 @@ namespace pdfem
       }
     } // namespace
 
+    StepRecord
+    equilibrate(SystemInterface          &system,
+                SystemInterface::Vector  &u,
+                const double              t,
+                const unsigned int        step,
+                const Parameters::Driver &settings,
+                DriverTimings            &time_spent)
+    {
+      using clock = std::chrono::steady_clock;
+      SystemInterface::Vector r, du;
+      system.apply_dirichlet(u, t);
+
+      StepRecord record;
+      record.step        = step;
+      record.time        = t;
+      record.load_factor = t;
+      double reference   = 0.;
+      for (unsigned int it = 0;; ++it)
+        {
+          auto         start  = clock::now();
+          const bool   matrix = it < settings.max_iterations;
+          const double norm   = system.residual(u, t, r, matrix);
+          time_spent.assembly += seconds_since(start);
+          if (!std::isfinite(norm))
+            throw RunFailure("diverged",
+                             "the residual is not finite at load step " +
+                               std::to_string(step));
+          if (it == 0)
+            reference = std::max(norm, system.force_scale());
+          const double scale       = std::max(reference, system.force_scale());
+          record.relative_residual = scale > 0. ? norm / scale : norm;
+          if (norm <= settings.residual_tolerance * scale ||
+              (scale == 0. && norm == 0.))
+            break;
+          if (it == settings.max_iterations)
+            {
+              std::ostringstream s;
+              s << "no equilibrium at load step " << step << " after " << it
+                << " iterations (relative residual " << record.relative_residual
+                << ")";
+              throw RunFailure("diverged", s.str());
+            }
+          start = clock::now();
+          record.linear_iterations += system.solve_linear(du, r);
+          time_spent.solve += seconds_since(start);
+          u += du;
+          ++record.newton_iterations;
+        }
+      return record;
+    }
+
     StaticDriver::StaticDriver(const Parameters::Driver &settings)
       : settings(settings)
     {}
@@ -32,52 +83,10 @@ namespace pdfem
                       SystemInterface::Vector                       &u,
                       const std::function<void(const StepRecord &)> &on_step)
     {
-      using clock = std::chrono::steady_clock;
-      SystemInterface::Vector r, du;
-      const unsigned int      n_steps = settings.load_steps;
+      const unsigned int n_steps = settings.load_steps;
       for (unsigned int step = 1; step <= n_steps; ++step)
-        {
-          const double t = double(step) / n_steps;
-          system.apply_dirichlet(u, t);
-
-          StepRecord record;
-          record.step        = step;
-          record.time        = t;
-          record.load_factor = t;
-          double reference   = 0.;
-          for (unsigned int it = 0;; ++it)
-            {
-              auto         start  = clock::now();
-              const bool   matrix = it < settings.max_iterations;
-              const double norm   = system.residual(u, t, r, matrix);
-              time_spent.assembly += seconds_since(start);
-              if (!std::isfinite(norm))
-                throw RunFailure("diverged",
-                                 "the residual is not finite at load step " +
-                                   std::to_string(step));
-              if (it == 0)
-                reference = std::max(norm, system.force_scale());
-              const double scale = std::max(reference, system.force_scale());
-              record.relative_residual = scale > 0. ? norm / scale : norm;
-              if (norm <= settings.residual_tolerance * scale ||
-                  (scale == 0. && norm == 0.))
-                break;
-              if (it == settings.max_iterations)
-                {
-                  std::ostringstream s;
-                  s << "no equilibrium at load step " << step << " after " << it
-                    << " iterations (relative residual "
-                    << record.relative_residual << ")";
-                  throw RunFailure("diverged", s.str());
-                }
-              start = clock::now();
-              record.linear_iterations += system.solve_linear(du, r);
-              time_spent.solve += seconds_since(start);
-              u += du;
-              ++record.newton_iterations;
-            }
-          on_step(record);
-        }
+        on_step(equilibrate(
+          system, u, double(step) / n_steps, step, settings, time_spent));
     }
   } // namespace Drivers
 } // namespace pdfem

@@ -464,8 +464,9 @@ namespace pdfem
                         "Q1/P1 stiffness of every cell, PD cells included, "
                         "followed by one block-Jacobi correction with the "
                         "coupled operator), 'amg' (ML built from the "
-                        "assembled coupled matrix) or 'ilu' (Ifpack ILU(1) "
-                        "of it).");
+                        "assembled coupled matrix, kept while bonds break "
+                        "until GMRES needs twice its first iteration count) "
+                        "or 'ilu' (Ifpack ILU(1) of it).");
       prm.declare_entry("Tolerance",
                         "1e-10",
                         Double(0.),
@@ -502,15 +503,42 @@ namespace pdfem
     Driver::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Driver");
-      prm.declare_entry("Type",
-                        "static",
-                        Selection("static"),
-                        "static: equilibrium under the full load, reached in "
-                        "'Load steps' equal increments of the load factor t.");
+      prm.declare_entry(
+        "Type",
+        "static",
+        Selection("static|quasi-static"),
+        "static: equilibrium under the full load, reached in 'Load steps' "
+        "equal increments of the load factor t. quasi-static: crack growth "
+        "under a slowly increasing load: after each equilibrium the "
+        "Fracture criterion is checked; where cracks grew the load is held "
+        "and equilibrium found again, otherwise t grows by 'Load "
+        "increment'. 'Load steps' is then the number of steps in all.");
       prm.declare_entry("Load steps",
                         "1",
                         Integer(1),
-                        "Number of load increments (t = k / Load steps).");
+                        "Number of load increments (static: t = k / Load "
+                        "steps), or of steps in all (quasi-static).");
+      prm.declare_entry("Load increment",
+                        "0",
+                        Double(0.),
+                        "quasi-static: the nominal increment of t (0: 1 / "
+                        "Load steps). Prescribed displacements and loads are "
+                        "expressions of t.");
+      prm.declare_entry("Jump to critical load",
+                        "true",
+                        Bool(),
+                        "quasi-static: when the load at which the criterion "
+                        "would be met, extrapolated linearly from the last "
+                        "step (loads proportional to t), is nearer than one "
+                        "increment, go there directly (PDLSM-FEM's rule).");
+      prm.declare_entry("Hold load while cracks grow",
+                        "true",
+                        Bool(),
+                        "quasi-static: keep t where it is while the "
+                        "criterion breaks bonds, until the cracks arrest "
+                        "(PDLSM-FEM). false: t follows its increments "
+                        "whatever breaks, for load histories (loading, "
+                        "unloading, reloading).");
       prm.declare_entry("Residual tolerance",
                         "1e-9",
                         Double(0.),
@@ -530,11 +558,112 @@ namespace pdfem
     Driver::parse(ParameterHandler &prm, const std::string &)
     {
       prm.enter_subsection("Driver");
-      type               = prm.get("Type");
-      load_steps         = prm.get_integer("Load steps");
-      residual_tolerance = prm.get_double("Residual tolerance");
-      max_iterations     = prm.get_integer("Max iterations");
+      type                    = prm.get("Type");
+      load_steps              = prm.get_integer("Load steps");
+      load_increment          = prm.get_double("Load increment");
+      jump_to_critical_load   = prm.get_bool("Jump to critical load");
+      hold_load_while_growing = prm.get_bool("Hold load while cracks grow");
+      residual_tolerance      = prm.get_double("Residual tolerance");
+      max_iterations          = prm.get_integer("Max iterations");
       prm.leave_subsection();
+    }
+
+    // -------------------------------------------------------------- Fracture
+    void
+    Fracture::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Fracture");
+      prm.declare_entry(
+        "Criterion",
+        "none",
+        Selection("none|mcts|max principal stress"),
+        "none: cracks never grow. mcts: stress-intensity factors K_I, K_II "
+        "and J at every crack tip by the domain interaction integral; a tip "
+        "grows by 'Growth length' in the direction of the maximum "
+        "circumferential tensile stress when K_eq > 'Fracture toughness' "
+        "(2D; PDLSM-FEM FC 1). max principal stress: bonds whose averaged "
+        "nodal stress has a principal value above 'Tensile strength' get a "
+        "virtual crack normal to that direction (PDLSM-FEM FC 2; 2D and "
+        "3D). In static runs the criterion is only evaluated and reported.");
+      prm.declare_entry("Fracture toughness",
+                        "0",
+                        Double(0.),
+                        "K_Ic [Pa sqrt(m)] (mcts).");
+      prm.declare_entry("Tensile strength",
+                        "0",
+                        Double(0.),
+                        "sigma_ult [Pa] (max principal stress).");
+      prm.declare_entry("Domain inner radius",
+                        "4",
+                        Double(0.),
+                        "Interaction integral: the weight q is 1 inside this "
+                        "radius, in element sizes of the cell nearest the "
+                        "tip; the fields there do not enter. Keep it at least "
+                        "the Horizon factor: inside a horizon of the tip the "
+                        "nonlocal fields are smeared.");
+      prm.declare_entry("Domain outer radius",
+                        "10",
+                        Double(0.),
+                        "Interaction integral: q falls smoothly to 0 at this "
+                        "radius, in element sizes.");
+      prm.declare_entry("Growth length",
+                        "1",
+                        Double(0.),
+                        "mcts: the advance d_c of a tip per growth step; max "
+                        "principal stress: the length of a virtual crack; in "
+                        "element sizes at the tip or bond.");
+      prm.declare_entry("Top K",
+                        "0",
+                        Integer(0),
+                        "max principal stress: at most this many bonds (the "
+                        "most stressed) get a virtual crack per step; 0: all.");
+      prm.declare_entry("Adaptive margin",
+                        "0",
+                        Double(0.),
+                        "m_e: FE cells within m_e element sizes of a crack "
+                        "become PD, at the start and whenever a crack grows; "
+                        "0: the PD region of the mesh never changes.");
+      prm.leave_subsection();
+    }
+
+    void
+    Fracture::parse(ParameterHandler &prm, const std::string &file)
+    {
+      prm.enter_subsection("Fracture");
+      criterion           = prm.get("Criterion");
+      toughness           = prm.get_double("Fracture toughness");
+      tensile_strength    = prm.get_double("Tensile strength");
+      domain_inner_radius = prm.get_double("Domain inner radius");
+      domain_outer_radius = prm.get_double("Domain outer radius");
+      growth_length       = prm.get_double("Growth length");
+      top_k               = prm.get_integer("Top K");
+      adaptive_margin     = prm.get_double("Adaptive margin");
+      prm.leave_subsection();
+      if (criterion == "mcts" && !(toughness > 0.))
+        throw InputError(file,
+                         "Fracture/Fracture toughness",
+                         "K_Ic = " + number(toughness) +
+                           " is not positive (Criterion = mcts needs it)",
+                         "K_Ic > 0 [Pa sqrt(m)]");
+      if (criterion == "max principal stress" && !(tensile_strength > 0.))
+        throw InputError(file,
+                         "Fracture/Tensile strength",
+                         "sigma_ult = " + number(tensile_strength) +
+                           " is not positive (Criterion = max principal "
+                           "stress needs it)",
+                         "sigma_ult > 0 [Pa]");
+      if (!(domain_outer_radius > domain_inner_radius))
+        throw InputError(file,
+                         "Fracture/Domain outer radius",
+                         number(domain_outer_radius) +
+                           " is not larger than the inner radius " +
+                           number(domain_inner_radius),
+                         "Domain outer radius > Domain inner radius");
+      if (criterion != "none" && !(growth_length > 0.))
+        throw InputError(file,
+                         "Fracture/Growth length",
+                         number(growth_length) + " is not positive",
+                         "> 0 element sizes");
     }
 
     // ---------------------------------------------------------------- Output
@@ -552,6 +681,11 @@ namespace pdfem
                         "true",
                         Bool(),
                         "Write solution-NNNNN.vtu/.pvtu and solution.pvd.");
+      prm.declare_entry("Write every",
+                        "0",
+                        Integer(0),
+                        "Field output every this many steps and at the last "
+                        "one; 0: at the last step only.");
       prm.declare_entry("Write nodes csv",
                         "false",
                         Bool(),
@@ -571,6 +705,7 @@ namespace pdfem
       prm.enter_subsection("Output");
       directory       = trim(prm.get("Directory"));
       write_vtu       = prm.get_bool("Write vtu");
+      write_every     = prm.get_integer("Write every");
       write_nodes_csv = prm.get_bool("Write nodes csv");
       print_timings   = prm.get_bool("Print timings");
       prm.leave_subsection();
@@ -590,6 +725,7 @@ namespace pdfem
       BoundaryConditions::declare(prm);
       LinearSolver::declare(prm);
       Driver::declare(prm);
+      Fracture::declare(prm);
       Output::declare(prm);
     }
 
@@ -646,6 +782,7 @@ namespace pdfem
       boundary_conditions.parse(prm, file, dim);
       linear_solver.parse(prm, file);
       driver.parse(prm, file);
+      fracture.parse(prm, file);
       output.parse(prm, file);
     }
 

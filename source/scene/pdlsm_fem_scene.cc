@@ -11,8 +11,10 @@
 #include <deal.II/grid/tria_description.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -90,30 +92,71 @@ namespace pdfem
           }
 
         // ---- what is not there yet: say so before any work
-        if (model.solver == Solver::quasi_static)
-          throw InputError(cmd,
-                           "SOLVER QUASI-STATIC",
-                           "is not supported yet (crack growth comes with the "
-                           "quasi-static driver)",
-                           "SOLVER STATIC");
         if (model.solver == Solver::dynamic)
           throw InputError(cmd,
                            "SOLVER DYNAMIC",
                            "is not supported yet (the explicit and Newmark "
                            "drivers come later)",
-                           "SOLVER STATIC");
+                           "SOLVER STATIC, SOLVER QUASI-STATIC");
+        if ((model.failure_criterion == 1 || model.adaptive_factor > 0.) &&
+            dim != 2)
+          throw InputError(cmd,
+                           model.failure_criterion == 1 ? "FC 1" :
+                                                          "SETSOLVING m_e",
+                           "stress-intensity factors and the adaptive PD "
+                           "region are 2D only",
+                           "FC 0 or FC 2 in 3D");
+
+        // ---- crack criterion (specs/004 §3): FC 1 = mcts, FC 2 = max
+        // principal stress; a static run only evaluates and reports it
+        Parameters::Fracture &fracture = setup.fracture;
         if (model.failure_criterion == 1)
-          setup.notes.push_back(
-            cmd + ": FC 1: the stress-intensity factors of a static run are "
-                  "not computed yet; the run goes on without them");
-        if (model.failure_criterion == 2)
-          setup.notes.push_back(
-            cmd + ": FC 2: the maximum bond principal stress of a static run "
-                  "is not reported yet; max_principal_stress in summary.json "
-                  "is the nodal one");
-        if (model.adaptive_factor > 0.)
-          setup.notes.push_back(cmd + ": SETSOLVING m_e: the adaptive PD "
-                                      "region applies to crack growth only");
+          {
+            fracture.criterion = "mcts";
+            fracture.toughness = model.fracture_toughness;
+            // The domain: from one horizon (m element sizes: inside it the
+            // nonlocal fields are smeared) to m_r element sizes beyond it
+            // (the peer's line contour lies at m_r, inside the horizon's
+            // reach when m_r < 2m). On plateCrack this gives the K_I of a
+            // fine-mesh FE model with a real slit to 0.1 %.
+            fracture.domain_inner_radius = model.horizon_factor;
+            fracture.domain_outer_radius =
+              model.horizon_factor + model.fc1_contour_factor;
+            if (!(fracture.toughness > 0.))
+              throw InputError(model.mesh_file,
+                               "line 4 (fracture toughness)",
+                               "K_Ic = " + number(fracture.toughness) +
+                                 " is not positive (FC 1 needs it)",
+                               "K_Ic > 0");
+          }
+        else if (model.failure_criterion == 2)
+          {
+            fracture.criterion        = "max principal stress";
+            fracture.tensile_strength = model.tensile_strength;
+            fracture.top_k            = model.top_k;
+            if (!(fracture.tensile_strength > 0.))
+              throw InputError(model.mesh_file,
+                               "line 4 (ultimate tensile stress)",
+                               "sigma_ult = " +
+                                 number(fracture.tensile_strength) +
+                                 " is not positive (FC 2 needs it)",
+                               "sigma_ult > 0");
+          }
+        fracture.adaptive_margin = model.adaptive_factor;
+        // Each crack is [start, tip] (specs/004 §3.1).
+        setup.tip_at_end.assign(model.cracks.size(), true);
+
+        // ---- load stepping: VEBC/VNBC are increments per step of t
+        const bool quasi_static = model.solver == Solver::quasi_static;
+        if (quasi_static)
+          {
+            setup.driver.type                  = "quasi-static";
+            setup.driver.load_steps            = model.n_steps;
+            setup.driver.load_increment        = 1.;
+            setup.driver.initial_load          = 0.;
+            setup.driver.jump_to_critical_load = true;
+            setup.write_every                  = model.write_frequency;
+          }
 
         // ---- material (mesh file line 4)
         const double E = model.youngs_modulus, nu = model.poissons_ratio;
@@ -221,6 +264,8 @@ namespace pdfem
               static_cast<unsigned int>(first_traction_id + s)};
             bc.component  = dim; // normal: positive = tension, as the peer
             bc.expression = exact(model.natural[s].traction);
+            if (quasi_static && model.natural[s].rate != 0.)
+              bc.expression += " + (" + exact(model.natural[s].rate) + ") * t";
             settings.traction.push_back(bc);
           }
         setup.timings["mesh"] = std::chrono::duration<double>(
@@ -237,6 +282,8 @@ namespace pdfem
             bc.vertices   = set.nodes;
             bc.component  = set.component;
             bc.expression = exact(set.value); // static: VEBC rates unused
+            if (quasi_static && set.rate != 0.)
+              bc.expression += " + (" + exact(set.rate) + ") * t";
             settings.dirichlet.push_back(bc);
           }
         for (const unsigned int s : model.reaction_sets)
@@ -254,7 +301,15 @@ namespace pdfem
         settings.fe_nodes_in_families    = model.fe_nodes_in_families;
         std::vector<std::vector<std::array<double, 3>>> cracks(
           model.cracks.begin(), model.cracks.end());
-        settings.cracks = Mesh::make_cracks<dim>(cracks);
+        settings.cracks           = Mesh::make_cracks<dim>(cracks);
+        settings.no_fail_vertices = model.no_fail_nodes; // vertex = node - 1
+        // The peer's growth length and virtual crack: d_cf x Delta_min, the
+        // square root of the smallest element area (specs/004 §3.1 item 7).
+        double smallest = std::numeric_limits<double>::max();
+        for (const auto &cell : tria.active_cell_iterators())
+          smallest = std::min(smallest, cell->measure());
+        fracture.growth_length_absolute =
+          model.fc1_growth_factor * std::pow(smallest, 1. / dim);
         if (!(settings.horizon_factor >= 1.))
           throw InputError(cmd,
                            "SETSOLVING",
@@ -270,6 +325,15 @@ namespace pdfem
         settings.linear_solver.preconditioner = "amg fe";
         settings.linear_solver.tolerance      = 1e-12;
         setup.driver.residual_tolerance       = 1e-11;
+        if (quasi_static)
+          {
+            // Crack growth needs the load-displacement curve to plotting
+            // accuracy, not to round-off: 1e-9 moves the peak reaction of
+            // plateCrack FC1 by 3e-11 relative and saves a quarter of the
+            // GMRES iterations.
+            settings.linear_solver.tolerance = 1e-10;
+            setup.driver.residual_tolerance  = 1e-9;
+          }
       }
 
 #define INSTANTIATE(dim)                                             \

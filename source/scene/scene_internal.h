@@ -38,9 +38,15 @@ namespace pdfem
         std::vector<bool>       cell_is_pd;
         Coupling::Settings<dim> settings;
         Parameters::Driver      driver;
-        bool                    write_vtu       = true;
-        bool                    write_nodes_csv = false;
-        bool                    print_timings   = false;
+        Parameters::Fracture    fracture;
+        /// Which end of each initial crack is its tip (empty: every end
+        /// inside the body that touches no other crack).
+        std::vector<bool> tip_at_end;
+        bool              write_vtu = true;
+        /// Field output every this many steps (and at the last); 0: last.
+        unsigned int write_every     = 0;
+        bool         write_nodes_csv = false;
+        bool         print_timings   = false;
         /// Dirichlet sets whose reactions are also summed as "RF" (the
         /// reaction-force sets of a PDLSM-FEM command file).
         std::vector<unsigned int> reaction_group;

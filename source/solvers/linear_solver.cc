@@ -46,6 +46,7 @@ namespace pdfem
     LinearSolver::set_constant_modes(const std::vector<std::vector<bool>> &m)
     {
       constant_modes = m;
+      amg.reset();
     }
 
     unsigned int
@@ -87,10 +88,28 @@ namespace pdfem
             {
               if (settings.preconditioner == "amg")
                 {
-                  // ML of the non-symmetric coupled matrix itself.
-                  TrilinosWrappers::PreconditionAMG amg;
-                  amg.initialize(K, amg_data(false, constant_modes));
-                  solver.solve(K, x, b, amg);
+                  // ML of the non-symmetric coupled matrix itself, kept
+                  // while the matrix only loses bonds and rebuilt once
+                  // GMRES needs twice the iterations it needed when fresh.
+                  const bool rebuild = !amg || amg_matrix != &K || amg_stale;
+                  if (rebuild)
+                    {
+                      amg =
+                        std::make_unique<TrilinosWrappers::PreconditionAMG>();
+                      amg->initialize(K, amg_data(false, constant_modes));
+                      amg_matrix = &K;
+                      amg_stale  = false;
+                    }
+                  SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+                    control,
+                    SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+                      settings.restart + 2, true));
+                  x = 0.;
+                  gmres.solve(K, x, b, *amg);
+                  if (rebuild)
+                    amg_fresh_iterations = std::max(control.last_step(), 5u);
+                  else if (control.last_step() > 2 * amg_fresh_iterations)
+                    amg_stale = true;
                 }
               else
                 {
@@ -170,8 +189,12 @@ namespace pdfem
                         const Operator                       &block_jacobi)
     {
       // The auxiliary FE stiffness is symmetric positive definite.
-      TrilinosWrappers::PreconditionAMG amg;
-      amg.initialize(auxiliary, amg_data(true, constant_modes));
+      if (!amg || amg_matrix != &auxiliary)
+        {
+          amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+          amg->initialize(auxiliary, amg_data(true, constant_modes));
+          amg_matrix = &auxiliary;
+        }
 
       const double  b_norm = b.l2_norm();
       SolverControl control(settings.max_iterations,
@@ -189,9 +212,9 @@ namespace pdfem
             gmres.solve(OperatorWrapper{K},
                         x,
                         b,
-                        CorrectedAMG{amg, K, block_jacobi, {}, {}});
+                        CorrectedAMG{*amg, K, block_jacobi, {}, {}});
           else
-            gmres.solve(OperatorWrapper{K}, x, b, amg);
+            gmres.solve(OperatorWrapper{K}, x, b, *amg);
         }
       catch (const SolverControl::NoConvergence &e)
         {

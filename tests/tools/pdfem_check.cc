@@ -8,11 +8,14 @@
 //   pdfem_check string summary.json KEY EXPECTED
 //   pdfem_check get    summary.json KEY        (prints the value)
 //   pdfem_check bound  summary.json KEY >|< BOUND
+//   pdfem_check nondecreasing history.csv COLUMN
+//       passes if the column never decreases from one row to the next.
 //   pdfem_check csv    a.csv b.csv TOL
 //       same header and rows; every column agrees to TOL relative to the
 //       largest magnitude among the columns of its quantity (same first
 //       letter).
 // Prints one line per check and exits 1 on any failure.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -235,6 +238,32 @@ main(int argc, char **argv)
                 << ")\n";
       return ok ? 0 : 1;
     }
+  if (a.size() == 3 && a[0] == "nondecreasing")
+    {
+      const auto        rows = read_csv(a[1]); // rows[0]: the header
+      const std::size_t c =
+        rows.empty() ?
+          0 :
+          std::find(rows[0].begin(), rows[0].end(), a[2]) - rows[0].begin();
+      if (rows.size() < 2 || c == rows[0].size())
+        {
+          std::cout << "FAIL " << a[2] << " is not a column of " << a[1]
+                    << " (or it has no rows)\n";
+          return 1;
+        }
+      bool ok = true;
+      for (std::size_t r = 2; r < rows.size(); ++r)
+        if (std::stod(rows[r].at(c)) < std::stod(rows[r - 1].at(c)))
+          {
+            std::cout << "FAIL " << a[2] << " decreases at row " << r << ": "
+                      << rows[r - 1].at(c) << " -> " << rows[r].at(c) << "\n";
+            ok = false;
+          }
+      if (ok)
+        std::cout << "ok   " << a[2] << " never decreases over "
+                  << rows.size() - 1 << " rows\n";
+      return ok ? 0 : 1;
+    }
   if (a.size() == 4 && a[0] == "csv")
     {
       const auto   x   = read_csv(a[1]);
@@ -279,6 +308,7 @@ main(int argc, char **argv)
                "       pdfem_check string FILE KEY EXPECTED\n"
                "       pdfem_check get FILE KEY\n"
                "       pdfem_check bound FILE KEY >|< BOUND\n"
+               "       pdfem_check nondecreasing FILE COLUMN\n"
                "       pdfem_check csv A B TOL\n";
   return 2;
 }

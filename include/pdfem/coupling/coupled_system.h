@@ -11,6 +11,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -70,7 +71,9 @@ namespace pdfem
       std::vector<BoundaryCondition<dim>> dirichlet;
       std::vector<BoundaryCondition<dim>> traction;
       std::vector<std::string>            body_force;
-      Parameters::LinearSolver            linear_solver;
+      /// Vertices whose bonds never break (PDLSM-FEM's no-fail region).
+      std::vector<unsigned int> no_fail_vertices;
+      Parameters::LinearSolver  linear_solver;
       /// The input file, named in error messages.
       std::string source_file;
     };
@@ -103,7 +106,11 @@ namespace pdfem
       std::vector<dealii::Point<dim>>              position;
       std::vector<dealii::Tensor<1, dim>>          displacement;
       std::vector<dealii::SymmetricTensor<2, dim>> stress;
-      std::vector<double>                          damage;
+      /// grad u (component i, direction j): the PDLSM nonlocal gradient at
+      /// PD nodes, the extrapolated FE gradient otherwise, averaged as the
+      /// stress is (stress = C : sym(grad u) wherever both are averaged).
+      std::vector<dealii::Tensor<2, dim>> displacement_gradient;
+      std::vector<double>                 damage;
       /// 1: PD only, 2: FE only, 3: interface (PD and FE).
       std::vector<std::uint8_t> kind;
     };
@@ -208,6 +215,29 @@ namespace pdfem
       /// The largest PD node damage (fraction of broken bonds), over all ranks.
       double
       max_damage() const;
+
+      /**
+       * Break every intact bond that crosses one of @p cracks (touching
+       * counts), except bonds of no-fail nodes; collective. The tangent,
+       * the held DoFs and the preconditioner follow on the next residual()
+       * and solve_linear(). Returns the number of bonds broken on all ranks.
+       */
+      unsigned long
+      break_bonds(const std::vector<Mesh::Crack<dim>> &cracks);
+
+      /// The intact bonds (k, m) of this rank's families (node indices; a
+      /// bond between two PD nodes appears once from each side).
+      std::vector<std::array<unsigned int, 2>>
+      intact_bonds() const;
+
+      /**
+       * The number of pieces the body is in: connected components of the
+       * graph whose edges are the FE cells' node pairs and the intact bonds,
+       * counting only components of at least @p min_nodes nodes (a node
+       * that lost every bond is not a piece). Collective.
+       */
+      unsigned int
+      count_pieces(unsigned int min_nodes) const;
 
       /// Names of the Dirichlet sets (boundaries or points), in input order.
       std::vector<std::string>

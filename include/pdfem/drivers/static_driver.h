@@ -31,6 +31,21 @@ namespace pdfem
     };
 
     /**
+     * Equilibrium at load factor @p t: set the prescribed DoFs, then Newton
+     * iterations K du = r, u += du until
+     * |r| <= tol * max(|r_0|, |f_ext|, |f_int|) (see StaticDriver). Throws
+     * RunFailure("diverged") after `Max iterations`. @p step only labels
+     * the record and messages.
+     */
+    StepRecord
+    equilibrate(SystemInterface          &system,
+                SystemInterface::Vector  &u,
+                double                    t,
+                unsigned int              step,
+                const Parameters::Driver &settings,
+                DriverTimings            &time_spent);
+
+    /**
      * Static equilibrium: the load factor t goes from 0 to 1 in `Load steps`
      * equal increments; at each, the prescribed DoFs are set to their values
      * at t and Newton iterations K du = r, u += du run until

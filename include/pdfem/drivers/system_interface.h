@@ -43,7 +43,9 @@ namespace pdfem
 
       /**
        * r = f_ext(t) - f_int(u) with the prescribed (and decoupled) DoFs set
-       * to zero; if @p assemble_tangent, also assemble K(u). Records the
+       * to zero; if @p assemble_tangent, K(u) is wanted for the next
+       * solve_linear() (which may assemble it then, so that a residual that
+       * only confirms convergence costs no assembly). Records the
        * reaction forces. Returns |r|.
        */
       virtual double

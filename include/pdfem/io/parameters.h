@@ -128,10 +128,47 @@ namespace pdfem
     /** `subsection Driver`. */
     struct Driver
     {
-      std::string  type               = "static";
-      unsigned int load_steps         = 1;
+      std::string  type       = "static"; // static | quasi-static
+      unsigned int load_steps = 1;
+      /// quasi-static: the nominal increment of t (0: 1 / Load steps).
+      double load_increment = 0.;
+      /// quasi-static: the first solve is at this t (PDLSM-FEM: 0).
+      double initial_load = -1.; // < 0: one increment
+      /// quasi-static: jump to the extrapolated critical load when it is
+      /// nearer than the nominal increment (PDLSM-FEM's rule).
+      bool jump_to_critical_load = true;
+      /// quasi-static: keep t while cracks grow (PDLSM-FEM); if false, t
+      /// follows its schedule whatever breaks (load histories).
+      bool         hold_load_while_growing = true;
       double       residual_tolerance = 1e-9; // relative to |f_ext| (or |r_0|)
       unsigned int max_iterations     = 10;
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm, const std::string &file);
+    };
+
+    /** `subsection Fracture`: crack-tip analysis and growth. */
+    struct Fracture
+    {
+      /// none | mcts (K by interaction integral, maximum circumferential
+      /// tensile stress; PDLSM-FEM FC 1) | max principal stress (FC 2).
+      std::string criterion        = "none";
+      double      toughness        = 0.; // K_Ic [Pa sqrt(m)]
+      double      tensile_strength = 0.; // sigma_ult [Pa]
+      /// Interaction-integral domain: r_in <= r <= r_out, in element sizes
+      /// of the cell nearest the tip.
+      double domain_inner_radius = 4.;
+      double domain_outer_radius = 10.;
+      /// d_c (mcts) and the virtual crack length (FC 2), in element sizes
+      /// at the tip or bond; growth_length_absolute > 0 overrides [m].
+      double       growth_length          = 1.;
+      double       growth_length_absolute = 0.;
+      unsigned int top_k                  = 0; // FC 2: 0 = every candidate
+      /// m_e: FE cells within m_e element sizes of a crack become PD (at the
+      /// start and as cracks grow); 0 = the PD region never changes.
+      double adaptive_margin = 0.;
 
       static void
       declare(dealii::ParameterHandler &prm);
@@ -142,10 +179,11 @@ namespace pdfem
     /** `subsection Output`. */
     struct Output
     {
-      std::string directory; // empty: "output-<scene name>"
-      bool        write_vtu       = true;
-      bool        write_nodes_csv = false;
-      bool        print_timings   = false;
+      std::string  directory; // empty: "output-<scene name>"
+      bool         write_vtu       = true;
+      unsigned int write_every     = 0; // VTU every n steps; 0: last only
+      bool         write_nodes_csv = false;
+      bool         print_timings   = false;
 
       static void
       declare(dealii::ParameterHandler &prm);
@@ -166,6 +204,7 @@ namespace pdfem
       BoundaryConditions boundary_conditions;
       LinearSolver       linear_solver;
       Driver             driver;
+      Fracture           fracture;
       Output             output;
 
       static void

@@ -13,6 +13,7 @@ namespace dealii
   namespace TrilinosWrappers
   {
     class SparseMatrix;
+    class PreconditionAMG;
     namespace MPI
     {
       class Vector;
@@ -58,6 +59,8 @@ namespace pdfem
        * preconditioned by ML AMG built from @p auxiliary and, if
        * @p block_jacobi is given (w = D^-1 t with D the node blocks of K's
        * diagonal), one correction z += D^-1 (r - K z) after the AMG.
+       * The AMG hierarchy is built once and reused while @p auxiliary stays
+       * the same matrix (it never changes while only bonds break).
        */
       using Operator =
         std::function<void(dealii::TrilinosWrappers::MPI::Vector &,
@@ -70,8 +73,12 @@ namespace pdfem
             const Operator                               &block_jacobi = {});
 
     private:
-      Parameters::LinearSolver       settings;
-      std::vector<std::vector<bool>> constant_modes;
+      Parameters::LinearSolver                                   settings;
+      std::vector<std::vector<bool>>                             constant_modes;
+      std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
+      const dealii::TrilinosWrappers::SparseMatrix *amg_matrix = nullptr;
+      bool                                          amg_stale  = false;
+      unsigned int                                  amg_fresh_iterations = 0;
     };
   } // namespace Solvers
 } // namespace pdfem

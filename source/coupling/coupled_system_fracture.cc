@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// CoupledSystem: what crack growth needs (breaking bonds, listing the intact
+// ones, counting the pieces the body is in).
+#include <pdfem/base/config.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <numeric>
+
+#include "coupled_system_impl.h"
+
+namespace pdfem
+{
+  namespace Coupling
+  {
+    using namespace dealii;
+
+    template <int dim>
+    unsigned long
+    CoupledSystem<dim>::break_bonds(const std::vector<Mesh::Crack<dim>> &cracks)
+    {
+      Impl         &s = *impl;
+      unsigned long n = 0;
+      if (!cracks.empty())
+        {
+          // A bond can only meet a crack if its owner is within a horizon
+          // of the crack's bounding box.
+          Point<dim> lo = cracks[0].points[0], hi = lo;
+          for (const auto &crack : cracks)
+            for (const auto &p : crack.points)
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  lo[d] = std::min(lo[d], p[d]);
+                  hi[d] = std::max(hi[d], p[d]);
+                }
+          PD::Families &f = s.families;
+          for (std::size_t o = 0; o < f.owners.size(); ++o)
+            {
+              const unsigned int k     = f.owners[o];
+              const double       reach = 2. * s.horizon[k];
+              bool               near  = true;
+              for (unsigned int d = 0; d < dim; ++d)
+                near = near && s.x[k][d] >= lo[d] - reach &&
+                       s.x[k][d] <= hi[d] + reach;
+              if (!near || s.no_fail[k])
+                continue;
+              for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
+                if (f.intact[b] && !s.no_fail[f.members[b]] &&
+                    Mesh::cut_by_any(cracks, s.x[k], s.x[f.members[b]]))
+                  {
+                    f.intact[b] = 0;
+                    ++n;
+                  }
+            }
+        }
+      n = Utilities::MPI::sum(n, s.comm);
+      if (n > 0)
+        {
+          s.update_decoupled();
+          s.update_held();
+          s.block_inverse.clear(); // rebuilt by the next solve
+        }
+      return n;
+    }
+
+    template <int dim>
+    std::vector<std::array<unsigned int, 2>>
+    CoupledSystem<dim>::intact_bonds() const
+    {
+      const PD::Families                      &f = impl->families;
+      std::vector<std::array<unsigned int, 2>> bonds;
+      for (std::size_t o = 0; o < f.owners.size(); ++o)
+        for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
+          if (f.intact[b])
+            bonds.push_back({{f.owners[o], f.members[b]}});
+      return bonds;
+    }
+
+    template <int dim>
+    unsigned int
+    CoupledSystem<dim>::count_pieces(const unsigned int min_nodes) const
+    {
+      const Impl &s = *impl;
+      // Union-find over the local edges, then the smallest node index of
+      // each component, agreed on by all ranks (MPI min) until nothing
+      // changes: every rank ends with the same labels.
+      std::vector<unsigned int> parent(s.n_nodes);
+      std::iota(parent.begin(), parent.end(), 0u);
+      const auto find = [&](unsigned int a) {
+        while (parent[a] != a)
+          a = parent[a] = parent[parent[a]];
+        return a;
+      };
+      const auto unite = [&](const unsigned int a, const unsigned int b) {
+        const unsigned int ra = find(a), rb = find(b);
+        if (ra != rb)
+          parent[std::max(ra, rb)] = std::min(ra, rb);
+      };
+      for (const auto &cell : s.tria.active_cell_iterators())
+        if (cell->is_locally_owned() && !s.cell_pd[cell->active_cell_index()])
+          for (unsigned int v = 1; v < cell->n_vertices(); ++v)
+            unite(s.vertex_to_node[cell->vertex_index(0)],
+                  s.vertex_to_node[cell->vertex_index(v)]);
+      const PD::Families &f = s.families;
+      for (std::size_t o = 0; o < f.owners.size(); ++o)
+        for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
+          if (f.intact[b])
+            unite(f.owners[o], f.members[b]);
+
+      std::vector<unsigned int> label(s.n_nodes), previous;
+      while (true)
+        {
+          for (unsigned int k = 0; k < s.n_nodes; ++k)
+            label[k] = find(k);
+          Utilities::MPI::min(label, s.comm, label);
+          if (label == previous)
+            break;
+          // Fold the agreed labels back into the local forest.
+          for (unsigned int k = 0; k < s.n_nodes; ++k)
+            unite(k, label[k]);
+          previous = label;
+        }
+
+      std::vector<unsigned int> size(s.n_nodes, 0);
+      for (unsigned int k = 0; k < s.n_nodes; ++k)
+        ++size[label[k]];
+      unsigned int pieces = 0;
+      for (const unsigned int n : size)
+        pieces += n >= std::max(min_nodes, 2u);
+      return pieces;
+    }
+
+#define INSTANTIATE(dim)                                          \
+  template unsigned long CoupledSystem<dim>::break_bonds(         \
+    const std::vector<Mesh::Crack<dim>> &);                       \
+  template std::vector<std::array<unsigned int, 2>>               \
+                        CoupledSystem<dim>::intact_bonds() const; \
+  template unsigned int CoupledSystem<dim>::count_pieces(unsigned int) const;
+    PDFEM_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace Coupling
+} // namespace pdfem
