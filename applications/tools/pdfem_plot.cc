@@ -52,6 +52,8 @@
 #include <vtkPlotPoints.h>
 #include <vtkPointData.h>
 #include <vtkPointSet.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPolyDataReader.h>
 #include <vtkProperty.h>
 #include <vtkRect.h>
 #include <vtkRenderWindow.h>
@@ -102,6 +104,8 @@ field: colour an unstructured grid (.vtu, or .pvtu from parallel runs) by one ar
                         needs; 1000 800 for 3D)
   --edges               draw the cell edges (thin dark lines)
   --zoom X0 X1 Y0 Y1    show this x/y window of a 2D model (coordinates after --warp)
+  --lines FILE.vtk      draw the lines of a legacy VTK polydata file on top (thick black; e.g.
+                        pdfem's crack_paths.vtk, drawn in the undeformed coordinates)
   --out OUT.png         the picture to write (required)
   2D models (all z equal) are seen from +z; 3D models in an isometric view from (+x,+y,+z),
   z up. The colour bar is drawn below the model.
@@ -841,6 +845,7 @@ unknown field or column), 1 if reading, rendering or writing fails.
                        {"--size", "W H", 2},
                        {"--edges", "", 0},
                        {"--zoom", "X0 X1 Y0 Y1", 4},
+                       {"--lines", "FILE.vtk", 1},
                        {"--out", "OUT.png", 1}});
     const std::string file = input_file(a, ".vtu or .pvtu");
     if (!ends_with(file, ".vtu") && !ends_with(file, ".pvtu"))
@@ -1094,6 +1099,28 @@ unknown field or column), 1 if reading, rendering or writing fails.
     model->SetViewport(0.0, bar_frac, 1.0, 1.0 - title_frac);
     model->SetBackground(1.0, 1.0, 1.0);
     model->AddActor(actor);
+    if (a.has("--lines"))
+      {
+        // Polylines on top (crack paths): lifted a little towards the
+        // viewer so that they are not hidden in the model's plane.
+        const std::string lines_file = a.options.at("--lines")[0];
+        if (!std::filesystem::exists(lines_file))
+          throw UsageError("--lines: the file " + in_quotes(lines_file) +
+                           " does not exist");
+        vtkNew<vtkPolyDataReader> lines_reader;
+        lines_reader->SetFileName(lines_file.c_str());
+        lines_reader->Update();
+        vtkNew<vtkPolyDataMapper> lines_mapper;
+        lines_mapper->SetInputConnection(lines_reader->GetOutputPort());
+        lines_mapper->ScalarVisibilityOff();
+        vtkNew<vtkActor> lines_actor;
+        lines_actor->SetMapper(lines_mapper);
+        lines_actor->GetProperty()->SetColor(0., 0., 0.);
+        lines_actor->GetProperty()->SetLineWidth(3.0);
+        if (is_2d)
+          lines_actor->SetPosition(0., 0., 1e-3 * (bounds[1] - bounds[0]));
+        model->AddActor(lines_actor);
+      }
     window->AddRenderer(model);
     vtkNew<vtkLight> head_light, key_light;
     if (!is_2d)

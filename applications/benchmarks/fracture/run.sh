@@ -1,0 +1,145 @@
+#!/usr/bin/env bash
+# Fracture benchmark: accuracy of the stress-intensity factors and cost of crack growth.
+#
+#   1. inclined central crack in a large plate (specs/004 §6.1), beta = 0..90 degrees, on the
+#      paper's mesh (39 x 39 PD cells) and on a finer one (79 x 79): K_I, K_II against
+#      sigma sqrt(pi a) cos^2(beta), sigma sqrt(pi a) cos(beta) sin(beta) -> sif_inclined.csv;
+#   2. centre and edge cracks in a strip against the handbook, and FE models with a real slit
+#      (plateCrack, edge crack) as references for what the integral gives on an exact
+#      discontinuity -> sif_references.csv;
+#   3. PDLSM-FEM's plateCrack quasi-static FC1 and FC2 inputs (read in place from ../shared):
+#      peak reaction, its displacement and wall time against the peer's baseline, the
+#      load-displacement chart and a picture of the crack path -> growth_peer.csv, PNGs;
+#   4. the adaptive PD region against an all-PD and a band model of the same growth scene
+#      -> growth_adaptive.csv.
+# Writes CSV and PNG files into doc/benchmarks/ (PNG only when pdfem-plot is built).
+#
+# usage: applications/benchmarks/fracture/run.sh [BUILD_DIR] [OUT_DIR]
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+root=$(cd "$here/../../.." && pwd)
+build=$(cd "${1:-$root/build}" && pwd)
+out=${2:-$root/doc/benchmarks}
+pdfem="$build/bin/pdfem"
+get="$(find "$build" -name pdfem_check -type f | head -n 1)"
+plot="$build/bin/pdfem-plot"
+peer="$root/../shared/peer-inputs/pdlsm-fem/plateCrack"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$out"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+
+# ---- 1. inclined crack
+csv="$out/fracture_sif_inclined.csv"
+echo "mesh,beta_deg,tip,K_I,K_II,K_I_exact,K_II_exact,K_I_error_of_K0,K_II_error_of_K0" > "$csv"
+for n in 39 79; do
+  sed "s/^n  = 39;/n  = $n;/" "$root/meshes/inclined_crack.geo" > "$work/inclined_$n.geo"
+  for beta in 0 15 30 45 60 75 90; do
+    crack=$(awk -v b="$beta" 'BEGIN { r = b * atan2(0, -1) / 180; c = 0.02 * cos(r); s = 0.02 * sin(r);
+                                      printf "(%.17g, %.17g) -- (%.17g, %.17g)", -c, -s, c, s }')
+    dir="$work/inclined_${n}_$beta"
+    "$pdfem" "$root/applications/examples/inclined_crack/inclined_crack.prm" --quiet --output "$dir" \
+      --set "Mesh/Input file=$work/inclined_$n.geo" --set "Peridynamics/Pre-existing cracks=$crack" \
+      --set "Output/Write vtu=false"
+    for tip in tip0 tip1; do
+      KI=$("$get" get "$dir/summary.json" final.crack_tips.$tip.K_I)
+      KII=$("$get" get "$dir/summary.json" final.crack_tips.$tip.K_II)
+      awk -v n="$n" -v b="$beta" -v t="$tip" -v KI="$KI" -v KII="$KII" 'BEGIN {
+        r = b * atan2(0, -1) / 180; K0 = 70e6 * sqrt(atan2(0, -1) * 0.02);
+        eI = K0 * cos(r)^2; eII = K0 * cos(r) * sin(r);
+        printf "%s,%s,%s,%.6e,%.6e,%.6e,%.6e,%.5f,%.5f\n", n, b, t, KI, KII, eI, eII, (KI - eI) / K0, (KII - eII) / K0 }' >> "$csv"
+    done
+  done
+done
+
+# ---- 2. handbook strips and slit references
+csv="$out/fracture_sif_references.csv"
+echo "case,model,dofs,K_I,reference,relative_error" > "$csv"
+strip() { # name scene reference [--set ...]
+  local name=$1 scene=$2 reference=$3; shift 3
+  local dir="$work/$name"
+  "$pdfem" "$scene" --quiet --output "$dir" --set "Output/Write vtu=false" "$@" 2> /dev/null
+  local K; K=$("$get" get "$dir/summary.json" final.crack_tips.tip0.K_I)
+  printf '%s,%s,%s,%.6e,%.6e,%s\n' "${name%%:*}" "${name#*:}" "$("$get" get "$dir/summary.json" problem.dofs)" \
+    "$K" "$reference" "$(awk -v k="$K" -v r="$reference" 'BEGIN { printf "%.4f", (k - r) / r }')" >> "$csv"
+}
+scenes="$root/tests/scenes"
+strip "centre strip:pdlsm-fem h=0.02" "$scenes/sif_center_crack_strip.prm" 9.1372e5
+strip "centre strip:pdlsm-fem h=0.01" "$scenes/sif_center_crack_strip.prm" 9.1372e5 \
+  --set "Mesh/Global refinements=1" --set "Linear solver/Type=gmres"
+strip "edge strip:pdlsm-fem h=0.02" "$scenes/sif_edge_crack_strip.prm" 1.67799e6
+strip "edge strip:pdlsm-fem h=0.01" "$scenes/sif_edge_crack_strip.prm" 1.67799e6 \
+  --set "Mesh/Global refinements=1" --set "Linear solver/Type=gmres"
+strip "edge strip:all pd h=0.02" "$scenes/sif_edge_crack_strip.prm" 1.67799e6 \
+  --set "Mesh/PD regions=all" --set "Linear solver/Type=gmres"
+gmsh -2 "$here/edge_crack_slit.geo" -format msh22 -o "$work/edge_slit.msh" -v 0
+sed -e "s|../../meshes/cracked_strip.geo|$work/edge_slit.msh|" -e 's/  set PD regions = pd/  set PD regions = none/' \
+  "$scenes/sif_edge_crack_strip.prm" > "$work/edge_slit.prm"
+strip "edge strip:fe slit 1 mm" "$work/edge_slit.prm" 1.67799e6 \
+  --set "Fracture/Domain inner radius=20" --set "Fracture/Domain outer radius=60"
+for f in 1 0.5; do
+  gmsh -2 "$here/plate_crack_slit.geo" -clscale $f -format msh22 -o "$work/slit_$f.msh" -v 0
+  sed "s|plate_crack_slit.geo|$work/slit_$f.msh|" "$here/plate_crack_slit.prm" > "$work/slit_$f.prm"
+  strip "plateCrack:fe slit clscale $f" "$work/slit_$f.prm" 3.7329e6
+done
+if [ -d "$peer" ]; then
+  strip "plateCrack:pdlsm-fem (peer mesh)" "$root/tests/scenes/peer_plate_crack_static.in" 3.7329e6
+fi
+
+# ---- 3. the peer's quasi-static inputs
+if [ -d "$peer" ]; then
+  csv="$out/fracture_growth_peer.csv"
+  echo "input,steps,exit_state,peak_RF,peak_step,peak_U,peer_peak_RF,peer_peak_U,wall_s,peer_wall_s,speedup,solve_s,criterion_s,linear_iterations" > "$csv"
+  for fc in 1 2; do
+    input="$peer/platCrack_quasiStatic_FC$fc.in"
+    dir="$work/peer_fc$fc"
+    start=$(date +%s.%N)
+    "$pdfem" "$input" --quiet --output "$dir" 2> /dev/null || true
+    wall=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.2f", e - s }')
+    s="$dir/summary.json"
+    if [ $fc = 1 ]; then ppeak=3.8787e7; pu=2.9497e-4; pwall=55.5; else ppeak=4.0170e7; pu=3.1533e-4; pwall=69.3; fi
+    its=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "linear_iterations") c = i } NR > 1 { s += $c } END { print s }' "$dir/history.csv")
+    printf 'FC%s,%s,%s,%.5e,%s,%.5e,%s,%s,%s,%s,%.1f,%.2f,%.2f,%s\n' "$fc" "$("$get" get "$s" steps)" \
+      "$("$get" get "$s" exit_state)" "$("$get" get "$s" peak_reaction.RF.x)" "$("$get" get "$s" peak_reaction.RF.x_step)" \
+      "$(awk -v t="$("$get" get "$s" peak_reaction.RF.x_load_factor)" 'BEGIN { print t * 4.79e-5 }')" \
+      "$ppeak" "$pu" "$wall" "$pwall" "$(awk -v w="$wall" -v p="$pwall" 'BEGIN { print p / w }')" \
+      "$("$get" get "$s" timings.solve)" "$("$get" get "$s" timings.criterion)" "$its" >> "$csv"
+    # load-displacement: U = 4.79e-5 t
+    awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) { if ($i == "load_factor") t = i; if ($i == "reaction_RF_x") r = i }
+                       print "U,reaction_RF_x"; next }
+             { printf "%.6e,%.6e\n", $t * 4.79e-5, $r }' "$dir/history.csv" > "$out/fracture_peer_fc${fc}_curve.csv"
+    printf 'U,peer_peak\n%s,%s\n' "$pu" "$ppeak" > "$work/peer_fc$fc.csv"
+    if [ -x "$plot" ]; then
+      xvfb-run -a "$plot" chart "$out/fracture_peer_fc${fc}_curve.csv" --x U --y reaction_RF_x \
+        --csv2 "$work/peer_fc$fc.csv" --y2 peer_peak --points --label "pdfem,PDLSM-FEM peak (baseline)" \
+        --xlabel "prescribed displacement U [m]" --ylabel "reaction RF [N/m]" \
+        --title "plateCrack quasi-static FC$fc: reaction against displacement" \
+        --out "$out/fracture_peer_fc${fc}_curve.png"
+      last=$(ls "$dir"/solution_*.pvtu | sort | tail -n 1)
+      xvfb-run -a "$plot" field "$last" --field damage --lines "$dir/crack_paths.vtk" --edges \
+        --zoom -0.55 0.55 -0.55 0.55 --title "plateCrack FC$fc: damage and crack path (last step)" \
+        --out "$out/fracture_peer_fc${fc}_path.png"
+    fi
+  done
+fi
+
+# ---- 4. adaptive PD region
+csv="$out/fracture_growth_adaptive.csv"
+echo "model,pd_cells_start,pd_cells_end,cells,peak_reaction,peak_step,steps,exit_state,solve_s,total_s" > "$csv"
+for scene in growth_mcts_all_pd growth_mcts_center_crack growth_mcts_adaptive; do
+  dir="$work/$scene"
+  "$pdfem" "$scenes/$scene.prm" --quiet --output "$dir" --set "Linear solver/Type=gmres" 2> /dev/null || true
+  s="$dir/summary.json"
+  printf '%s,%s,%s,%s,%.6e,%s,%s,%s,%.2f,%.2f\n' "$scene" "$("$get" get "$s" problem.pd_cells)" \
+    "$("$get" get "$s" final.pd_cells)" "$("$get" get "$s" problem.cells)" "$("$get" get "$s" peak_reaction.top.y)" \
+    "$("$get" get "$s" peak_reaction.top.y_step)" "$("$get" get "$s" steps)" "$("$get" get "$s" exit_state)" \
+    "$("$get" get "$s" timings.solve)" "$("$get" get "$s" timings.total)" >> "$csv"
+  if [ "$scene" = growth_mcts_adaptive ] && [ -x "$plot" ]; then
+    "$pdfem" "$scenes/$scene.prm" --quiet --output "$dir-vtu" --set "Linear solver/Type=gmres" \
+      --set "Output/Write vtu=true" 2> /dev/null || true
+    xvfb-run -a "$plot" field "$dir-vtu/solution_00000.pvtu" --field pd_region --lines "$dir-vtu/crack_paths.vtk" \
+      --edges --zoom -0.55 0.55 -0.3 0.3 --title "Adaptive PD region (yellow) after the crack cut the strip" \
+      --out "$out/fracture_adaptive_region.png"
+  fi
+done
+echo "Results in $out/fracture_*.csv"
