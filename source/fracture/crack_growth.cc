@@ -328,15 +328,27 @@ namespace pdfem
       if (!allow_growth)
         return a;
 
-      std::sort(mine.begin(), mine.end());
-      mine.erase(std::unique(mine.begin(),
-                             mine.end(),
-                             [](const Candidate &x, const Candidate &y) {
-                               return x.k == y.k && x.m == y.m;
-                             }),
-                 mine.end());
-      if (settings.top_k > 0 && mine.size() > settings.top_k)
-        mine.resize(settings.top_k);
+      // Ties: a symmetric specimen has bonds of equal stress, equal only up
+      // to round-off that differs with the number of ranks. Stresses equal
+      // to 1e-9 of the largest rank as equal, and the node numbers (the
+      // same on any number of ranks) decide, so that every run cuts the
+      // same bonds. Each rank keeps its own Top K, then all ranks the Top K
+      // of those.
+      const double quantum = 1e-9 * largest;
+      const auto   top_k   = [&](std::vector<Candidate> &c) {
+        for (Candidate &x : c)
+          x.stress = quantum * std::round(x.stress / quantum);
+        std::sort(c.begin(), c.end());
+        c.erase(std::unique(c.begin(),
+                            c.end(),
+                            [](const Candidate &x, const Candidate &y) {
+                              return x.k == y.k && x.m == y.m;
+                            }),
+                c.end());
+        if (settings.top_k > 0 && c.size() > settings.top_k)
+          c.resize(settings.top_k);
+      };
+      top_k(mine);
       std::vector<double> packed;
       for (const Candidate &c : mine)
         packed.insert(packed.end(), {c.stress, double(c.k), double(c.m)});
@@ -346,23 +358,7 @@ namespace pdfem
           all.push_back({part[i],
                          static_cast<unsigned int>(part[i + 1]),
                          static_cast<unsigned int>(part[i + 2])});
-      // Ties: a symmetric specimen has bonds of equal stress, equal only up
-      // to round-off that differs with the number of ranks. Stresses equal
-      // to 1e-9 of the largest rank as equal, and the node numbers (the
-      // same on any number of ranks) decide, so that every run cuts the
-      // same bonds.
-      const double quantum = 1e-9 * largest;
-      for (Candidate &c : all)
-        c.stress = quantum * std::round(c.stress / quantum);
-      std::sort(all.begin(), all.end());
-      all.erase(std::unique(all.begin(),
-                            all.end(),
-                            [](const Candidate &x, const Candidate &y) {
-                              return x.k == y.k && x.m == y.m;
-                            }),
-                all.end());
-      if (settings.top_k > 0 && all.size() > settings.top_k)
-        all.resize(settings.top_k);
+      top_k(all);
 
       std::vector<Mesh::Crack<dim>> cracks;
       for (const Candidate &c : all)

@@ -40,12 +40,6 @@ namespace pdfem
       {
         using clock = std::chrono::steady_clock;
 
-        double
-        seconds_since(const clock::time_point &start)
-        {
-          return std::chrono::duration<double>(clock::now() - start).count();
-        }
-
         /// The reaction (component) of largest magnitude seen, and when.
         struct Peak
         {
@@ -354,8 +348,10 @@ namespace pdfem
         getrusage(RUSAGE_SELF, &usage);
         const double peak_memory_mb = usage.ru_maxrss / 1024.; // Linux: kB
         output_time += seconds_since(start);
-        timings["output"] = output_time;
-        timings["total"]  = seconds_since(total_start);
+        timings["output"]          = output_time;
+        const char *const phases[] = {
+          "mesh", "setup", "assembly", "solve", "criterion", "output", "total"};
+        timings["total"] = seconds_since(total_start);
 
         if (root)
           {
@@ -492,13 +488,7 @@ namespace pdfem
             json.end_object();
 
             json.begin_object("timings");
-            for (const char *phase : {"mesh",
-                                      "setup",
-                                      "assembly",
-                                      "solve",
-                                      "criterion",
-                                      "output",
-                                      "total"})
+            for (const char *phase : phases)
               json.value(phase, timings[phase]);
             json.end_object();
             json.value("peak_memory_mb_rank0", peak_memory_mb);
@@ -510,13 +500,7 @@ namespace pdfem
             *progress << "Exit state: " << exit_state << ". Results in "
                       << out_dir << "/" << std::endl;
             if (setup.print_timings)
-              for (const char *phase : {"mesh",
-                                        "setup",
-                                        "assembly",
-                                        "solve",
-                                        "criterion",
-                                        "output",
-                                        "total"})
+              for (const char *phase : phases)
                 *progress << "  " << std::setw(9) << std::left << phase
                           << std::right << std::setw(10) << std::fixed
                           << std::setprecision(3) << timings[phase] << " s"

@@ -41,17 +41,12 @@ namespace pdfem
     using Coupling::stress_component_names;
     using internal::make_output_folder;
     using internal::make_triangulation;
+    using internal::seconds_since;
     using internal::Setup;
 
     namespace
     {
       using clock = std::chrono::steady_clock;
-
-      double
-      seconds_since(const clock::time_point &start)
-      {
-        return std::chrono::duration<double>(clock::now() - start).count();
-      }
 
       std::string
       resolve(const std::string &path, const std::string &base)

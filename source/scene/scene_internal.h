@@ -58,6 +58,15 @@ namespace pdfem
         std::chrono::steady_clock::time_point setup_start;
       };
 
+      /// Wall seconds since @p start.
+      inline double
+      seconds_since(const std::chrono::steady_clock::time_point &start)
+      {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                             start)
+          .count();
+      }
+
       /// Create @p out_dir (rank 0), or throw InputError naming @p file and
       /// @p parameter.
       void
