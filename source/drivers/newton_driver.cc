@@ -76,8 +76,13 @@ namespace pdfem
                 (norm_trial <= (1. - 1e-4 * alpha) * norm ||
                  norm_trial <= settings.residual_tolerance *
                                  std::max(reference, system.force_scale()));
-              if (decrease || !settings.line_search || cut == 5)
+              if (decrease || !settings.line_search)
                 break;
+              // With the exact Jacobian du is a descent direction of |r|^2:
+              // no decrease down to a = 1/32 means K is (nearly) singular
+              // or the load is past the end of the branch.
+              if (cut == 5)
+                return false;
               alpha *= 0.5;
             }
           if (!std::isfinite(norm_trial))
@@ -94,16 +99,24 @@ namespace pdfem
                       const std::function<void(const StepRecord &)> &on_step,
                       StabilityInterface                            *stability)
     {
-      result                        = NewtonOutcome();
-      SystemInterface::Vector last  = u;
-      double                  t     = 0.;
-      double                  dt    = 1. / std::max(1u, settings.load_steps);
-      unsigned int            step  = 0;
+      result                       = NewtonOutcome();
+      SystemInterface::Vector last = u, previous = u;
+      double                  t = 0., t_previous = 0.;
+      const double            base  = 1. / std::max(1u, settings.load_steps);
+      double                  dt    = base;
+      unsigned int            level = 0, successes = 0, step = 0;
       const double            t_end = 1. - 1e-12;
       while (t < t_end)
         {
           const double t_new = std::min(1., t + dt);
-          u                  = last;
+          // Predictor: the secant through the last two converged states
+          // (the free DoFs follow the load instead of waiting for Newton).
+          u = last;
+          if (step > 0 && t > t_previous)
+            {
+              u.add((t_new - t) / (t - t_previous), last);
+              u.add(-(t_new - t) / (t - t_previous), previous);
+            }
           system.apply_dirichlet(u, t_new);
           StepRecord record;
           record.step        = step + 1;
@@ -133,24 +146,37 @@ namespace pdfem
           if (ok)
             {
               ++step;
+              previous                = last;
+              t_previous              = t;
               t                       = t_new;
               last                    = u;
               result.last_stable_load = t;
               on_step(record);
+              // after two successes in a row, undo one cut
+              if (level > 0 && ++successes == 2)
+                {
+                  --level;
+                  dt        = std::min(base, dt / settings.step_cut_factor);
+                  successes = 0;
+                }
               continue;
             }
-          if (result.n_cuts < settings.max_step_cuts)
+          successes = 0;
+          if (level < settings.max_step_cuts)
             {
+              ++level;
               ++result.n_cuts;
               dt *= settings.step_cut_factor;
               continue;
             }
-          // No cut left: unstable crack growth (or no equilibrium at all).
+          // The smallest increment failed: unstable crack growth (or no
+          // equilibrium at all).
           u                   = last;
           result.failure_load = t_new;
           std::ostringstream s;
-          s << "unstable at load factor " << t_new << " (" << why << " after "
-            << result.n_cuts << " step cut(s)); last stable load factor " << t;
+          s << "unstable at load factor " << t_new << " (" << why << " with "
+            << settings.max_step_cuts
+            << " step cut(s)); last stable load factor " << t;
           throw RunFailure("unstable", s.str());
         }
     }

@@ -534,8 +534,9 @@ namespace pdfem
       prm.declare_entry("Max step cuts",
                         "4",
                         Integer(0),
-                        "newton: load increments cut in the whole run before "
-                        "it stops with exit state 'unstable'.");
+                        "newton: cuts of the load increment in a row (two "
+                        "converged steps undo one) before the run stops with "
+                        "exit state 'unstable'.");
       prm.declare_entry("Step cut factor",
                         "0.25",
                         Double(0., 1.),

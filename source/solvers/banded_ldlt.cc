@@ -57,12 +57,25 @@ namespace pdfem
           for (std::size_t j = first; j < i; ++j)
             {
               // s = A_ij - sum_{k = first .. j-1} L_ik D_k L_jk
-              const double *Lj = &factors[j * w]; // Lj[k - j + b]
-              double        s  = Li[j + b - i];
-              for (std::size_t k = first; k < j; ++k)
-                s -= t[k + b - i] * Lj[k + b - j];
-              t[j + b - i]  = s;                      // L_ij D_j
-              Li[j + b - i] = s / factors[j * w + b]; // L_ij
+              const double     *Lj  = &factors[j * w]; // Lj[k - j + b]
+              const double     *a   = &t[first + b - i];
+              const double     *c   = &Lj[first + b - j];
+              const std::size_t len = j - first;
+              // four partial sums: vectorised without reassociation flags
+              double      s0 = 0., s1 = 0., s2 = 0., s3 = 0.;
+              std::size_t k = 0;
+              for (; k + 4 <= len; k += 4)
+                {
+                  s0 += a[k] * c[k];
+                  s1 += a[k + 1] * c[k + 1];
+                  s2 += a[k + 2] * c[k + 2];
+                  s3 += a[k + 3] * c[k + 3];
+                }
+              for (; k < len; ++k)
+                s0 += a[k] * c[k];
+              const double s = Li[j + b - i] - ((s0 + s1) + (s2 + s3));
+              t[j + b - i]   = s;                      // L_ij D_j
+              Li[j + b - i]  = s / factors[j * w + b]; // L_ij
             }
           double d = Li[b];
           for (std::size_t j = first; j < i; ++j)

@@ -404,6 +404,52 @@ namespace
     EXPECT_GT(*std::max_element(d.begin(), d.end()), 1.);
   }
 
+  TEST(RNPBar, DisplacementControlFlagsUnstableEquilibria)
+  {
+    // specs/001 A7/A8: the end displacement prescribed, the reaction peaks
+    // at 599.0 (U = 2.83); past it Newton still converges, but to states
+    // whose reduced tangent is indefinite: the driver must reject them and
+    // stop 'unstable' near the peak.
+    Bar                bar(0.5, 4000., 0.);
+    const unsigned int n         = bar.x.size();
+    bar.loads.constrained[n - 1] = 1;
+    bar.loads.prescribed         = [n](double t, std::vector<double> &u) {
+      u[0]     = 0.;
+      u[n - 1] = 4. * t;
+    };
+    RNPSystem<1>       system(bar.x, bar.V, bar.s, {}, bar.loads);
+    Parameters::Driver settings;
+    settings.type               = "newton";
+    settings.load_steps         = 20;
+    settings.residual_tolerance = 1e-10;
+    settings.max_iterations     = 25;
+    settings.max_step_cuts      = 3;
+    settings.step_cut_factor    = 0.25;
+    Drivers::NewtonDriver            driver(settings);
+    Drivers::SystemInterface::Vector u;
+    system.initialize_vector(u);
+    double      peak = 0.;
+    std::string state;
+    try
+      {
+        driver.run(
+          system,
+          u,
+          [&](const Drivers::StepRecord &) {
+            peak = std::max(peak, system.last_internal_force()[n - 1]);
+          },
+          &system);
+      }
+    catch (const RunFailure &e)
+      {
+        state = e.exit_state;
+      }
+    EXPECT_EQ(state, "unstable");
+    EXPECT_GT(driver.outcome().n_unstable_states, 0u);
+    EXPECT_NEAR(peak, 599.0, 0.005 * 599.0);
+    EXPECT_NEAR(4. * driver.outcome().last_stable_load, 2.83, 0.1);
+  }
+
   TEST(RNPSystem, SoftenedBondMakesTheTangentIndefinite)
   {
     // Two nodes, one clamped: one bond past r_c has a negative stiffness.

@@ -51,7 +51,7 @@ namespace pdfem
       double last_stable_load = 0.;
       /// The load factor that could not be reached (unstable runs).
       double failure_load = 0.;
-      /// Load step cuts made.
+      /// Load step cuts made in the whole run.
       unsigned int n_cuts = 0;
       /// The last stability check of a converged state.
       StabilityReport last_check;
@@ -66,22 +66,24 @@ namespace pdfem
      * f_int.
      *
      * - The load factor goes from 0 to 1 in `Load steps` increments; each
-     *   step starts from the last converged state with the prescribed DoFs
-     *   at their new values.
+     *   step starts from the secant extrapolation of the last two converged
+     *   states with the prescribed DoFs at their new values.
      * - Each iteration is damped by a backtracking line search on |r|
      *   (accept u + a du once |r| <= (1 - 1e-4 a) |r_k|; a = 1, 1/2, ...,
      *   1/32), so that an iterate does not leave the basin of the stable
-     *   branch.
+     *   branch; with the exact Jacobian du is a descent direction of |r|^2,
+     *   so no decrease down to 1/32 fails the step at once.
      * - A step converges when |r| <= tol * max(|r_0|, |f_ext|, |f_int|).
      * - At every converged step the stability of the state is checked
      *   (StabilityInterface: the reduced tangent must be positive definite;
      *   Newton also converges to unstable equilibria, specs/001 §3.1).
      * - A step that does not converge in `Max iterations`, or converges to
      *   an unstable state, is cut: the increment times `Step cut factor`,
-     *   at most `Max step cuts` times in the run (the paper cut by 10 then
-     *   100, by hand). When no cut is left the run stops with
-     *   RunFailure("unstable") and outcome() says at which load; the
-     *   solution is the last stable state, never a rejected iterate.
+     *   down to `Max step cuts` cuts in a row (the paper cut by 10 then
+     *   100, by hand); two successes in a row undo one cut. When the
+     *   smallest increment fails the run stops with RunFailure("unstable")
+     *   and outcome() says at which load; the solution is the last stable
+     *   state, never a rejected iterate.
      */
     class NewtonDriver
     {
