@@ -450,6 +450,83 @@ namespace
     EXPECT_NEAR(4. * driver.outcome().last_stable_load, 2.83, 0.1);
   }
 
+  TEST(RNPPlate, PreCrackedPlateMatchesTheReferenceRun)
+  {
+    // specs/000 §7.6 and §7.11 (the independent re-run of §4.5): the
+    // 76 x 76 lattice, h = 0.2, horizon 0.8, pre-crack (0, 7.5)--(7.5, 7.5);
+    // C = 3e8, beta = 10; 208 nodes per side loaded by b_y = +-3.125e6
+    // (one load step of 4e6 N), 32 clamped. Bond counts, and max damage and
+    // max |u_y| of the first step in both force normalisations.
+    std::vector<Point<2>> x;
+    std::vector<double>   V;
+    lattice<2>(76, 0.2, x, V);
+    Mesh::Crack<2> crack;
+    crack.points   = {Point<2>(0., 7.5), Point<2>(7.5, 7.5)};
+    const auto cut = [crack](const Point<2> &a, const Point<2> &b) {
+      return crack.cuts(a, b);
+    };
+    RNPSystem<2>::Loads loads;
+    loads.constrained.assign(2 * x.size(), 0);
+    std::vector<double> b(2 * x.size(), 0.);
+    for (unsigned int i = 0; i < x.size(); ++i)
+      {
+        const bool bottom = x[i][1]<0.7, top = x[i][1]> 14.3;
+        if ((bottom || top) && x[i][0] > 14.3)
+          loads.constrained[2 * i] = loads.constrained[2 * i + 1] = 1;
+        if ((bottom || top) && x[i][0] < 10.3)
+          b[2 * i + 1] = (top ? 1. : -1.) * 3.125e6 * V[i];
+      }
+    EXPECT_EQ(std::count(loads.constrained.begin(),
+                         loads.constrained.end(),
+                         std::uint8_t(1)),
+              64);
+    EXPECT_EQ(std::count_if(b.begin(), b.end(), [](double v) { return v; }),
+              416);
+    loads.prescribed     = [](double, std::vector<double> &) {};
+    loads.external_force = [b](double t, std::vector<double> &f) {
+      for (std::size_t d = 0; d < f.size(); ++d)
+        f[d] = t * b[d];
+    };
+    for (const auto scaling : {PDModels::RNPForceScaling::paper,
+                               PDModels::RNPForceScaling::prototype})
+      {
+        RNPSettings s;
+        s.C       = 3e8;
+        s.beta    = 10.;
+        s.horizon = 0.8;
+        s.scaling = scaling;
+        RNPSystem<2> system(x, V, s, cut, loads);
+        EXPECT_EQ(system.n_bonds(), 131100u);
+        EXPECT_EQ(system.n_cut_bonds(), 1498u);
+        Parameters::Driver settings;
+        settings.type               = "newton";
+        settings.residual_tolerance = 1e-10;
+        Drivers::NewtonDriver            driver(settings);
+        Drivers::SystemInterface::Vector u;
+        system.initialize_vector(u);
+        unsigned int iterations = 0;
+        driver.run(
+          system,
+          u,
+          [&](const Drivers::StepRecord &r) {
+            iterations = r.newton_iterations;
+          },
+          &system);
+        EXPECT_LE(iterations, 4u);
+        const std::vector<double> uu(u.begin(), u.end());
+        const auto                d = system.damage(uu);
+        const auto at = std::max_element(d.begin(), d.end()) - d.begin();
+        double     uy = 0.;
+        for (unsigned int i = 0; i < x.size(); ++i)
+          uy = std::max(uy, std::abs(uu[2 * i + 1]));
+        const bool paper = scaling == PDModels::RNPForceScaling::paper;
+        EXPECT_NEAR(d[at], paper ? 0.1214 : 0.0906, 0.005 * d[at]);
+        EXPECT_NEAR(uy, paper ? 0.19049 : 0.14150, 1e-4 * uy);
+        EXPECT_NEAR(x[at][0], 7.4, 1e-9);
+        EXPECT_NEAR(std::abs(x[at][1] - 7.5), 0.3, 1e-9);
+      }
+  }
+
   TEST(RNPSystem, SoftenedBondMakesTheTangentIndefinite)
   {
     // Two nodes, one clamped: one bond past r_c has a negative stiffness.
