@@ -181,26 +181,30 @@ namespace
       if (with_crack)
         {
           Mesh::Crack<2> crack;
-          crack.points = {Point<2>(-0.01, 0.5 * (n - 1) * h + 0.01),
-                          Point<2>(0.5 * (n - 1) * h,
-                                   0.5 * (n - 1) * h + 0.01)};
-          cut          = [crack](const Point<2> &a, const Point<2> &b) {
+          crack.points = {
+            {Point<2>(-0.01, 0.5 * (n - 1) * h + 0.01),
+             Point<2>(0.5 * (n - 1) * h, 0.5 * (n - 1) * h + 0.01)}};
+          cut = [crack](const Point<2> &a, const Point<2> &b) {
             return crack.cuts(a, b);
           };
         }
     RNPSystem<dim> system(x, V, s, cut, {});
     if (with_crack)
-      EXPECT_GT(system.n_cut_bonds(), 0u);
+      {
+        EXPECT_GT(system.n_cut_bonds(), 0u);
+      }
     for (const double target : {0.4, 2.5})
       {
         const std::vector<double> u = state(system, target, 7 + dim);
         const auto                d = system.damage(u);
         // softened: some bonds past the inflection point, some not
         if (target > 1.)
-          EXPECT_GT(std::count_if(d.begin(),
-                                  d.end(),
-                                  [](double v) { return v > 1.; }),
-                    0);
+          {
+            EXPECT_GT(std::count_if(d.begin(),
+                                    d.end(),
+                                    [](double v) { return v > 1.; }),
+                      0);
+          }
         const double error = tangent_error(system, u);
         EXPECT_LT(error, 1e-6) << dim << "D, max damage " << target;
         EXPECT_GT(error, 0.); // the comparison is not vacuous
@@ -461,7 +465,7 @@ namespace
     std::vector<double>   V;
     lattice<2>(76, 0.2, x, V);
     Mesh::Crack<2> crack;
-    crack.points   = {Point<2>(0., 7.5), Point<2>(7.5, 7.5)};
+    crack.points   = {{Point<2>(0., 7.5), Point<2>(7.5, 7.5)}};
     const auto cut = [crack](const Point<2> &a, const Point<2> &b) {
       return crack.cuts(a, b);
     };
