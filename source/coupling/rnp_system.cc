@@ -30,39 +30,55 @@ namespace pdfem
         return v;
       }
 
-      /// Every pair within @p horizon: CSR, each node its own family owner.
+      /// Every pair within @p horizon with at least one PD node (both PD
+      /// unless @p fe_members): symmetric lists, CSR over all nodes.
       template <int dim>
       void
-      find_pairs(const std::vector<Point<dim>> &x,
-                 const double                   horizon,
-                 std::vector<std::size_t>      &offsets,
-                 std::vector<unsigned int>     &members)
+      find_pairs(const std::vector<Point<dim>>   &x,
+                 const double                     horizon,
+                 const std::vector<std::uint8_t> &pd,
+                 const bool                       fe_members,
+                 std::vector<std::size_t>        &offsets,
+                 std::vector<unsigned int>       &members)
       {
+        std::vector<std::vector<unsigned int>> lists(x.size());
+        const std::vector<std::uint8_t>        may_be_member =
+          fe_members ? std::vector<std::uint8_t>(x.size(), 1) : pd;
         if constexpr (dim == 1)
           {
-            offsets.assign(1, 0);
-            members.clear();
             const double r2 = horizon * horizon * (1. + 1e-10);
             for (unsigned int i = 0; i < x.size(); ++i)
-              {
+              if (pd[i])
                 for (unsigned int j = 0; j < x.size(); ++j)
-                  if (j != i && x[i].distance_square(x[j]) <= r2)
-                    members.push_back(j);
-                offsets.push_back(members.size());
-              }
+                  if (j != i && may_be_member[j] &&
+                      x[i].distance_square(x[j]) <= r2)
+                    lists[i].push_back(j);
           }
         else
           {
-            std::vector<unsigned int> owners(x.size());
+            std::vector<unsigned int> owners;
             for (unsigned int i = 0; i < x.size(); ++i)
-              owners[i] = i;
-            const PD::Families f =
-              PD::find_families<dim>(x,
-                                     std::vector<double>(x.size(), horizon),
-                                     owners,
-                                     std::vector<std::uint8_t>(x.size(), 1));
-            offsets = f.offsets;
-            members = f.members;
+              if (pd[i])
+                owners.push_back(i);
+            const PD::Families f = PD::find_families<dim>(
+              x, std::vector<double>(x.size(), horizon), owners, may_be_member);
+            for (std::size_t k = 0; k < owners.size(); ++k)
+              lists[owners[k]].assign(f.members.begin() + f.offsets[k],
+                                      f.members.begin() + f.offsets[k + 1]);
+          }
+        // a bond from a PD node to a non-PD node acts on both
+        for (unsigned int i = 0; i < x.size(); ++i)
+          if (pd[i])
+            for (const unsigned int j : lists[i])
+              if (!pd[j])
+                lists[j].push_back(i);
+        offsets.assign(1, 0);
+        members.clear();
+        for (auto &list : lists)
+          {
+            std::sort(list.begin(), list.end());
+            members.insert(members.end(), list.begin(), list.end());
+            offsets.push_back(members.size());
           }
       }
     } // namespace
@@ -73,18 +89,28 @@ namespace pdfem
       const std::vector<double>     &v_in,
       const PDModels::RNPSettings   &settings,
       const std::function<bool(const Point<dim> &, const Point<dim> &)> &cut,
-      const Loads     &loads_in,
-      const RNPTangent tangent)
+      const Loads                     &loads_in,
+      const RNPTangent                 tangent,
+      const std::vector<std::uint8_t> &pd_node,
+      const LinearElements            &elements,
+      const bool                       fe_members)
       : x(x_in)
       , volume(v_in)
       , rnp(settings)
       , loads(loads_in)
       , method(tangent)
+      , fe(elements)
     {
       // ---- bonds: every pair within the horizon not cut by a pre-crack
       std::vector<std::size_t>  all_offsets;
       std::vector<unsigned int> all_members;
-      find_pairs<dim>(x, settings.horizon, all_offsets, all_members);
+      find_pairs<dim>(x,
+                      settings.horizon,
+                      pd_node.empty() ? std::vector<std::uint8_t>(x.size(), 1) :
+                                        pd_node,
+                      fe_members,
+                      all_offsets,
+                      all_members);
       offsets.assign(1, 0);
       double shortest = std::numeric_limits<double>::infinity();
       for (unsigned int i = 0; i < x.size(); ++i)
@@ -111,6 +137,16 @@ namespace pdfem
       for (unsigned int i = 0; i < x.size(); ++i)
         adjacency[i].assign(members.begin() + offsets[i],
                             members.begin() + offsets[i + 1]);
+      for (const auto &dofs : fe.dofs)
+        for (const unsigned int a : dofs)
+          for (const unsigned int b : dofs)
+            if (a / dim != b / dim)
+              adjacency[a / dim].push_back(b / dim);
+      for (auto &list : adjacency)
+        {
+          std::sort(list.begin(), list.end());
+          list.erase(std::unique(list.begin(), list.end()), list.end());
+        }
       const std::vector<unsigned int> order =
         Solvers::reverse_cuthill_mckee(adjacency);
       band_row.assign(n_dofs(), -1);
@@ -133,6 +169,12 @@ namespace pdfem
                     bandwidth = std::max(bandwidth, std::abs(ri - rj));
                 }
           }
+      for (const auto &dofs : fe.dofs)
+        for (const unsigned int a : dofs)
+          for (const unsigned int b : dofs)
+            if (band_row[a] >= 0 && band_row[b] >= 0)
+              bandwidth =
+                std::max(bandwidth, std::abs(band_row[a] - band_row[b]));
       K.reinit(next, bandwidth);
       f_int.assign(n_dofs(), 0.);
       f_ext.assign(n_dofs(), 0.);
@@ -201,6 +243,14 @@ namespace pdfem
                 }
             }
         }
+      for (std::size_t e = 0; e < fe.dofs.size(); ++e)
+        {
+          const auto   &dofs = fe.dofs[e];
+          const double *Ke   = fe.matrices[e].data();
+          for (std::size_t a = 0; a < dofs.size(); ++a)
+            for (std::size_t b = 0; b < dofs.size(); ++b)
+              f[dofs[a]] += Ke[a * dofs.size() + b] * u[dofs[b]];
+        }
     }
 
     namespace
@@ -249,6 +299,11 @@ namespace pdfem
     {
       const unsigned int n = n_dofs();
       matrix.assign(std::size_t(n) * n, 0.);
+      for (std::size_t e = 0; e < fe.dofs.size(); ++e)
+        for (std::size_t a = 0; a < fe.dofs[e].size(); ++a)
+          for (std::size_t b = 0; b < fe.dofs[e].size(); ++b)
+            matrix[std::size_t(fe.dofs[e][a]) * n + fe.dofs[e][b]] +=
+              fe.matrices[e][a * fe.dofs[e].size() + b];
       if (how == RNPTangent::analytic)
         {
           analytic_entries<dim>(x,
@@ -278,7 +333,7 @@ namespace pdfem
                 node_force(w, i, fm);
                 w[col] = u[col];
                 for (unsigned int p = 0; p < dim; ++p)
-                  matrix[std::size_t(dim * i + p) * n + col] =
+                  matrix[std::size_t(dim * i + p) * n + col] +=
                     (fp[p] - fm[p]) / (2. * fd_step);
               }
           }
@@ -290,6 +345,15 @@ namespace pdfem
                                      const RNPTangent           how)
     {
       K.clear_values();
+      for (std::size_t e = 0; e < fe.dofs.size(); ++e)
+        for (std::size_t a = 0; a < fe.dofs[e].size(); ++a)
+          for (std::size_t b = 0; b < fe.dofs[e].size(); ++b)
+            {
+              const long br = band_row[fe.dofs[e][a]];
+              const long bc = band_row[fe.dofs[e][b]];
+              if (br >= 0 && bc >= 0 && bc <= br)
+                K.add(br, bc, fe.matrices[e][a * fe.dofs[e].size() + b]);
+            }
       if (how == RNPTangent::analytic)
         {
           analytic_entries<dim>(x,

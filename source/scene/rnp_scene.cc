@@ -14,6 +14,9 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
 
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <algorithm>
@@ -117,14 +120,14 @@ namespace pdfem
                            "Peridynamics/Model",
                            "rnp runs on one MPI rank",
                            "run without mpirun, or with -np 1");
-        if (std::find(setup.cell_is_pd.begin(),
-                      setup.cell_is_pd.end(),
-                      false) != setup.cell_is_pd.end())
-          throw InputError(prm.file,
-                           "Mesh/PD regions",
-                           "the rnp model needs every cell PD (RNP coupled to "
-                           "FE is not implemented yet)",
-                           "all");
+        for (const auto &cell : tria.active_cell_iterators())
+          if (!setup.cell_is_pd[cell->active_cell_index()] &&
+              !cell->reference_cell().is_hyper_cube())
+            throw InputError(prm.file,
+                             "Mesh/PD regions",
+                             "the FE cells around an RNP region must be "
+                             "quadrilaterals or hexahedra",
+                             "a quad/hex mesh for the FE region, or all PD");
         PDModels::RNPSettings model;
         model.influence = rp.influence == "linear" ?
                             PDModels::RNPInfluence::linear :
@@ -185,17 +188,73 @@ namespace pdfem
               node_of[v] = x.size();
               x.push_back(vertices[v]);
             }
+        // Volumes: PD cells' shares; with FE nodes as family members, every
+        // cell's share (an interface node stands for material on both sides).
+        const bool          fe_members = prm.peridynamics.fe_nodes_in_families;
         std::vector<double> volume(x.size(), 0.);
-        double              h = 0.;
+        std::vector<std::uint8_t> pd_node(x.size(), 0);
+        double                    h = 0.;
         for (const auto &cell : tria.active_cell_iterators())
           {
-            h = std::max(h, std::pow(cell->measure(), 1. / dim));
+            const bool pd = setup.cell_is_pd[cell->active_cell_index()];
+            if (pd)
+              h = std::max(h, std::pow(cell->measure(), 1. / dim));
             for (const unsigned int v : cell->vertex_indices())
-              volume[node_of[cell->vertex_index(v)]] +=
-                cell->measure() / cell->n_vertices();
+              {
+                const int k = node_of[cell->vertex_index(v)];
+                if (pd || fe_members)
+                  volume[k] += cell->measure() / cell->n_vertices();
+                if (pd)
+                  pd_node[k] = 1;
+              }
           }
         if (rp.nodal_volumes == "uniform")
-          std::fill(volume.begin(), volume.end(), std::pow(h, dim));
+          for (unsigned int i = 0; i < x.size(); ++i)
+            volume[i] = (pd_node[i] || fe_members) ? std::pow(h, dim) : 0.;
+
+        // ---- the FE cells: Q1 stiffness matrices on the shared nodes
+        typename Coupling::RNPSystem<dim>::LinearElements elements;
+        {
+          const FESystem<dim>              fe(FE_Q<dim>(1), dim);
+          const QGauss<dim>                quadrature(2);
+          FEValues<dim>                    values(fe,
+                               quadrature,
+                               update_gradients | update_JxW_values);
+          const FEValuesExtractors::Vector displacement(0);
+          const double                     lambda = settings.material.lambda();
+          const double                     mu     = settings.material.mu();
+          const unsigned int               n      = fe.n_dofs_per_cell();
+          for (const auto &cell : tria.active_cell_iterators())
+            if (!setup.cell_is_pd[cell->active_cell_index()])
+              {
+                values.reinit(cell);
+                std::vector<double>       Ke(n * n, 0.);
+                std::vector<unsigned int> dofs(n);
+                for (unsigned int i = 0; i < n; ++i)
+                  {
+                    const auto ci = fe.system_to_component_index(i);
+                    dofs[i] =
+                      dim * node_of[cell->vertex_index(ci.second)] + ci.first;
+                  }
+                for (const unsigned int q : values.quadrature_point_indices())
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      const auto ei =
+                        values[displacement].symmetric_gradient(i, q);
+                      const double di = trace(ei);
+                      for (unsigned int j = 0; j < n; ++j)
+                        {
+                          const auto ej =
+                            values[displacement].symmetric_gradient(j, q);
+                          Ke[i * n + j] +=
+                            (lambda * di * trace(ej) + 2. * mu * (ei * ej)) *
+                            values.JxW(q);
+                        }
+                    }
+                elements.dofs.push_back(dofs);
+                elements.matrices.push_back(Ke);
+              }
+        }
         model.horizon          = prm.peridynamics.horizon_factor * h;
         const double thickness = dim == 2 ? prm.material.thickness : 1.;
 
@@ -227,7 +286,8 @@ namespace pdfem
                 nodes.push_back(best);
                 const double r2 = layer * layer * (1. + 1e-10);
                 for (unsigned int i = 0; i < x.size(); ++i)
-                  if (i != best && x[i].distance_square(bc.point) <= r2)
+                  if (i != best && pd_node[i] &&
+                      x[i].distance_square(bc.point) <= r2)
                     nodes.push_back(i);
               }
             else
@@ -239,10 +299,12 @@ namespace pdfem
                                                         face->boundary_id()))
                     for (const unsigned int v : face->vertex_indices())
                       on_boundary.push_back(face->vertex(v));
-                const double r2 = layer * layer * (1. + 1e-10) + 1e-24 * h * h;
+                // PD nodes: the nonlocal layer; FE nodes: the boundary's own
+                const double r2_fe = 1e-24 * h * h;
+                const double r2    = layer * layer * (1. + 1e-10) + r2_fe;
                 for (unsigned int i = 0; i < x.size(); ++i)
                   for (const auto &p : on_boundary)
-                    if (x[i].distance_square(p) <= r2)
+                    if (x[i].distance_square(p) <= (pd_node[i] ? r2 : r2_fe))
                       {
                         nodes.push_back(i);
                         break;
@@ -349,13 +411,18 @@ namespace pdfem
           cut,
           loads,
           rp.tangent == "analytic" ? Coupling::RNPTangent::analytic :
-                                     Coupling::RNPTangent::finite_difference);
+                                     Coupling::RNPTangent::finite_difference,
+          pd_node,
+          elements,
+          fe_members);
         auto &timings          = setup.timings;
         timings["setup"]       = seconds_since(setup.setup_start);
         std::ostream *progress = options.quiet ? nullptr : &std::cout;
         if (progress)
           *progress << "pdfem " << PDFEM_VERSION << ": " << setup.file << "\n"
-                    << "  " << dim << "D RNP, " << x.size() << " nodes, "
+                    << "  " << dim << "D RNP, " << x.size() << " nodes ("
+                    << std::count(pd_node.begin(), pd_node.end(), 1) << " PD, "
+                    << elements.dofs.size() << " FE cells), "
                     << system.n_bonds() << " bonds (" << system.n_cut_bonds()
                     << " cut by pre-cracks), horizon " << model.horizon
                     << ", C = " << model.C << ", beta = " << model.beta
@@ -543,7 +610,11 @@ namespace pdfem
         json.value("message", message);
         json.begin_object("problem");
         json.value("nodes", static_cast<unsigned long>(x.size()));
-        json.value("pd_nodes", static_cast<unsigned long>(x.size()));
+        json.value("pd_nodes",
+                   static_cast<unsigned long>(
+                     std::count(pd_node.begin(), pd_node.end(), 1)));
+        json.value("fe_cells",
+                   static_cast<unsigned long>(elements.dofs.size()));
         json.value("cells", static_cast<unsigned long>(tria.n_active_cells()));
         json.value("dofs", static_cast<unsigned long>(n_dofs));
         json.value("bonds", static_cast<unsigned long>(system.n_bonds()));

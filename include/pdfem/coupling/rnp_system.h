@@ -37,6 +37,9 @@ namespace pdfem
      * factorised by LDL^T, whose negative pivots count the negative
      * eigenvalues: the stability check of the Newton driver.
      *
+     * Finite elements may share the nodes (LinearElements): an RNP region
+     * coupled to FE through the interface nodes, one matrix.
+     *
      * Serial: all nodes on one process (MPI_COMM_SELF vectors).
      */
     template <int dim>
@@ -56,14 +59,31 @@ namespace pdfem
         std::function<void(double, std::vector<double> &)> external_force;
       };
 
-      /// @p cut(x_i, x_j): is the bond cut by a pre-crack?
+      /**
+       * Linear elements sharing the nodes (the finite elements around an
+       * RNP region): per element its DoFs and its symmetric stiffness
+       * (row-major). They add K_e u_e to f_int and K_e to the tangent.
+       */
+      struct LinearElements
+      {
+        std::vector<std::vector<unsigned int>> dofs;
+        std::vector<std::vector<double>>       matrices;
+      };
+
+      /// @p cut(x_i, x_j): is the bond cut by a pre-crack? @p pd_node: the
+      /// nodes that own families (empty: all); @p elements: FE cells;
+      /// @p fe_members: non-PD nodes are family members too (bonds PD-FE
+      /// within the horizon, acting on both nodes).
       RNPSystem(const std::vector<dealii::Point<dim>>                 &x,
                 const std::vector<double>                             &volume,
                 const PDModels::RNPSettings                           &settings,
                 const std::function<bool(const dealii::Point<dim> &,
                                          const dealii::Point<dim> &)> &cut,
                 const Loads                                           &loads,
-                RNPTangent tangent = RNPTangent::analytic);
+                RNPTangent                       tangent = RNPTangent::analytic,
+                const std::vector<std::uint8_t> &pd_node = {},
+                const LinearElements            &elements   = {},
+                bool                             fe_members = false);
 
       // ---- Drivers::SystemInterface
       void
@@ -178,6 +198,7 @@ namespace pdfem
       PDModels::RNP<dim>              rnp;
       Loads                           loads;
       RNPTangent                      method;
+      LinearElements                  fe;
       // families, CSR, symmetric (j in F(i) iff i in F(j))
       std::vector<std::size_t>  offsets;
       std::vector<unsigned int> members;
