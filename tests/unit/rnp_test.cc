@@ -257,6 +257,74 @@ namespace
     check_tangent<3>(4, 1.8, false);
   }
 
+  TEST(RNPTangent, MatchesFiniteDifferencesWithFiniteElements)
+  {
+    // An RNP region (x < 0.35) next to linear elements (the cells with
+    // x >= 0.25), FE nodes as family members: bonds PD-FE act on both.
+    const unsigned int    n = 7;
+    std::vector<Point<2>> x;
+    std::vector<double>   V;
+    lattice<2>(n, 0.1, x, V);
+    std::vector<std::uint8_t> pd(x.size());
+    for (unsigned int i = 0; i < x.size(); ++i)
+      pd[i] = x[i][0] < 0.35;
+    RNPSystem<2>::LinearElements           elements;
+    std::mt19937                           gen(3);
+    std::uniform_real_distribution<double> dist(-1., 1.);
+    for (unsigned int j = 0; j + 1 < n; ++j)
+      for (unsigned int i = 0; i + 1 < n; ++i)
+        if (0.1 * i > 0.24)
+          {
+            const unsigned int        nodes[4] = {j * n + i,
+                                                  j * n + i + 1,
+                                                  (j + 1) * n + i,
+                                                  (j + 1) * n + i + 1};
+            std::vector<unsigned int> dofs;
+            for (const unsigned int k : nodes)
+              for (unsigned int c = 0; c < 2; ++c)
+                dofs.push_back(2 * k + c);
+            std::vector<double> A(64), K(64, 0.);
+            for (auto &a : A)
+              a = dist(gen);
+            for (unsigned int r = 0; r < 8; ++r)
+              for (unsigned int c = 0; c < 8; ++c)
+                for (unsigned int k = 0; k < 8; ++k)
+                  K[r * 8 + c] += 1e3 * A[k * 8 + r] * A[k * 8 + c];
+            elements.dofs.push_back(dofs);
+            elements.matrices.push_back(K);
+          }
+    RNPSettings s;
+    s.C       = 3.;
+    s.beta    = 2.;
+    s.horizon = 0.26;
+    for (const bool fe_members : {false, true})
+      {
+        RNPSystem<2> system(
+          x, V, s, {}, {}, RNPTangent::analytic, pd, elements, fe_members);
+        for (const double target : {0.4, 2.5})
+          {
+            const std::vector<double> u = state(system, target, 5);
+            EXPECT_LT(tangent_error(system, u), 1e-6);
+            std::vector<double> K, Kfd;
+            system.dense_tangent(u, K, RNPTangent::analytic);
+            system.dense_tangent(u, Kfd, RNPTangent::finite_difference);
+            double diff = 0., norm = 0.;
+            for (std::size_t e = 0; e < K.size(); ++e)
+              {
+                diff += (K[e] - Kfd[e]) * (K[e] - Kfd[e]);
+                norm += K[e] * K[e];
+              }
+            EXPECT_LT(std::sqrt(diff / norm), 1e-6);
+          }
+        // the PD-FE bonds exist only with FE members
+        unsigned int fe_bonds = 0;
+        for (unsigned int i = 0; i < x.size(); ++i)
+          if (!pd[i])
+            fe_bonds += system.family_size(i);
+        EXPECT_EQ(fe_bonds > 0, fe_members);
+      }
+  }
+
   TEST(RNPSystem, AffineFieldLeavesInteriorNodesInEquilibrium)
   {
     // specs/000 §7.4: u = G x gives zero force at nodes farther than the
