@@ -28,6 +28,7 @@
 #include <limits>
 #include <map>
 
+#include "rnp_output.h"
 #include "scene_internal.h"
 #include <sys/resource.h>
 
@@ -574,6 +575,14 @@ namespace pdfem
           system.residual(v, last_load, r, false);
         }
         const auto R = reactions();
+        if (setup.write_vtu)
+          write_rnp_vtu<dim>(setup.out_dir,
+                             tria,
+                             node_of,
+                             last_u,
+                             system.damage_history(),
+                             pd_node,
+                             last_load);
         if (setup.write_nodes_csv)
           {
             std::ofstream out(setup.out_dir + "/nodes.csv");
