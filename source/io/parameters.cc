@@ -764,6 +764,13 @@ namespace pdfem
       linear_solver.parse(prm, file);
       driver.parse(prm, file);
       output.parse(prm, file);
+      if (driver.type == "newton" && peridynamics.model != "rnp")
+        throw InputError(file,
+                         "Driver/Type",
+                         "the newton driver (stability check) runs the rnp "
+                         "model only; the " +
+                           peridynamics.model + " scene is linear",
+                         "static, or Peridynamics/Model = rnp");
     }
 
     int
