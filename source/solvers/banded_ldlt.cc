@@ -6,6 +6,29 @@
 #include <limits>
 #include <numeric>
 
+extern "C"
+{
+  // LAPACK band Cholesky (OpenBLAS on Debian): 'U' storage with LDAB = b + 1
+  // is exactly the row-wise lower band kept here.
+  void
+  dpbtrf_(const char *uplo,
+          const int  *n,
+          const int  *kd,
+          double     *ab,
+          const int  *ldab,
+          int        *info);
+  void
+  dpbtrs_(const char   *uplo,
+          const int    *n,
+          const int    *kd,
+          const int    *nrhs,
+          const double *ab,
+          const int    *ldab,
+          double       *b,
+          const int    *ldb,
+          int          *info);
+}
+
 namespace pdfem
 {
   namespace Solvers
@@ -40,6 +63,37 @@ namespace pdfem
     bool
     BandedLDLT::factorize()
     {
+      // Positive definite (every stable state): LAPACK's blocked Cholesky.
+      // Otherwise LDL^T below, which also counts the negative pivots.
+      if (n > 0)
+        {
+          factors       = band;
+          const int  nn = n, kd = b, ldab = b + 1;
+          int        info = 0;
+          const char uplo = 'U';
+          dpbtrf_(&uplo, &nn, &kd, factors.data(), &ldab, &info);
+          if (info == 0)
+            {
+              double max_diagonal = 0.;
+              double smallest     = std::numeric_limits<double>::infinity();
+              for (std::size_t i = 0; i < n; ++i)
+                {
+                  max_diagonal =
+                    std::max(max_diagonal, std::abs(band[i * (b + 1) + b]));
+                  const double u = factors[i * (b + 1) + b];
+                  smallest       = std::min(smallest, u * u);
+                }
+              smallest_pivot = max_diagonal > 0. ? smallest / max_diagonal : 0.;
+              if (smallest_pivot > 1e-13)
+                {
+                  n_negative    = 0;
+                  is_cholesky   = true;
+                  is_factorized = true;
+                  return true;
+                }
+            }
+        }
+      is_cholesky         = false;
       factors             = band;
       n_negative          = 0;
       smallest_pivot      = std::numeric_limits<double>::infinity();
@@ -99,6 +153,22 @@ namespace pdfem
     void
     BandedLDLT::solve(std::vector<double> &x) const
     {
+      if (is_cholesky)
+        {
+          const int  nn = n, kd = b, ldab = b + 1, nrhs = 1, ldb = n;
+          int        info = 0;
+          const char uplo = 'U';
+          dpbtrs_(&uplo,
+                  &nn,
+                  &kd,
+                  &nrhs,
+                  factors.data(),
+                  &ldab,
+                  x.data(),
+                  &ldb,
+                  &info);
+          return;
+        }
       const std::size_t w = b + 1;
       // L y = rhs
       for (std::size_t i = 0; i < n; ++i)

@@ -9,6 +9,7 @@
 #include <pdfem/drivers/newton_driver.h>
 #include <pdfem/mesh/cracks.h>
 #include <pdfem/pd_models/rnp.h>
+#include <pdfem/solvers/banded_ldlt.h>
 
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -596,6 +597,47 @@ namespace
         EXPECT_NEAR(uy, paper ? 0.19049 : 0.14150, 1e-4 * uy);
         EXPECT_NEAR(x[at][0], 7.4, 1e-9);
         EXPECT_NEAR(std::abs(x[at][1] - 7.5), 0.3, 1e-9);
+      }
+  }
+
+  TEST(BandedLDLT, SolvesAndCountsNegativeEigenvalues)
+  {
+    // T = tridiag(-1, 2, -1) - sigma I (n = 50, stored with band 3): the
+    // eigenvalues are 2 - 2 cos(k pi / 51) - sigma. Positive definite:
+    // LAPACK's Cholesky; indefinite: the LDL^T, whose negative pivots count
+    // the negative eigenvalues. Both must solve T x = b.
+    const unsigned int n = 50;
+    for (const double sigma : {-0.5, 0.013, 0.5, 1.7})
+      {
+        pdfem::Solvers::BandedLDLT T;
+        T.reinit(n, 3);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            T.add(i, i, 2. - sigma);
+            if (i > 0)
+              T.add(i, i - 1, -1.);
+          }
+        unsigned int expected = 0;
+        for (unsigned int k = 1; k <= n; ++k)
+          expected += 2. - 2. * std::cos(k * M_PI / (n + 1)) - sigma < 0.;
+        ASSERT_TRUE(T.factorize());
+        EXPECT_EQ(T.n_negative_pivots(), expected) << "sigma " << sigma;
+        if (sigma > 0.)
+          EXPECT_GT(expected, 0u); // the indefinite cases are indefinite
+        std::vector<double> x(n);
+        for (unsigned int i = 0; i < n; ++i)
+          x[i] = std::sin(0.3 * i) + 1.;
+        const std::vector<double> b = x;
+        T.solve(x);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            double Tx = (2. - sigma) * x[i];
+            if (i > 0)
+              Tx -= x[i - 1];
+            if (i + 1 < n)
+              Tx -= x[i + 1];
+            EXPECT_NEAR(Tx, b[i], 1e-10 * (1. + std::abs(b[i])));
+          }
       }
   }
 

@@ -16,7 +16,9 @@ namespace pdfem
      * the number of negative pivots D_ii is the number of negative
      * eigenvalues), which is the stability check of a tangent (specs/001
      * §2.5: a converged state is stable iff the reduced tangent is positive
-     * definite). Meant for the PD-only systems of moderate size (a few
+     * definite). A positive definite matrix (every stable state) is
+     * factorised by LAPACK's blocked band Cholesky (dpbtrf), an indefinite
+     * one by the LDL^T here. Meant for RNP systems of moderate size (a few
      * 10^4 unknowns with a bandwidth of a few hundred); serial.
      */
     class BandedLDLT
@@ -87,6 +89,7 @@ namespace pdfem
       std::vector<double> band;    // row i: A(i, i-b .. i)
       std::vector<double> factors; // L (unit diagonal) below, D on it
       bool                is_factorized  = false;
+      bool                is_cholesky    = false; // factors from LAPACK
       std::size_t         n_negative     = 0;
       double              smallest_pivot = 0.;
     };
