@@ -133,6 +133,21 @@ namespace pdfem
       // ---- free DoFs in reverse Cuthill-McKee order of the nodes
       if (loads.constrained.empty())
         loads.constrained.assign(n_dofs(), 0);
+      // A node without a bond or an element (cut free by pre-cracks) would
+      // make K singular: it is held where it is (decoupled).
+      {
+        std::vector<std::uint8_t> in_element(x.size(), 0);
+        for (const auto &dofs : fe.dofs)
+          for (const unsigned int d : dofs)
+            in_element[d / dim] = 1;
+        for (unsigned int i = 0; i < x.size(); ++i)
+          if (offsets[i + 1] == offsets[i] && !in_element[i])
+            {
+              ++n_decoupled;
+              for (unsigned int c = 0; c < dim; ++c)
+                loads.constrained[dim * i + c] = 1;
+            }
+      }
       std::vector<std::vector<unsigned int>> adjacency(x.size());
       for (unsigned int i = 0; i < x.size(); ++i)
         adjacency[i].assign(members.begin() + offsets[i],

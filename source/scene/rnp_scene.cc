@@ -630,6 +630,8 @@ namespace pdfem
         json.value("cut_bonds",
                    static_cast<unsigned long>(system.n_cut_bonds()));
         json.value("broken_bonds", 0ul);
+        json.value("decoupled_nodes",
+                   static_cast<unsigned long>(system.n_decoupled_nodes()));
         json.value("bandwidth",
                    static_cast<unsigned long>(system.matrix().bandwidth()));
         json.end_object();

@@ -641,6 +641,48 @@ namespace
       }
   }
 
+  TEST(RNPSystem, NodeCutFreeByCracksIsHeld)
+  {
+    // A closed square crack around the centre node of a 5 x 5 lattice
+    // (horizon 1.5 h) cuts all its bonds: it is held, K stays regular.
+    std::vector<Point<2>> x;
+    std::vector<double>   V;
+    lattice<2>(5, 1., x, V);
+    std::vector<Mesh::Crack<2>> square;
+    const double                a = 0.5;
+    const Point<2> c0(2. - a, 2. - a), c1(2. + a, 2. - a), c2(2. + a, 2. + a),
+      c3(2. - a, 2. + a);
+    for (const auto &[p, q] :
+         {std::pair<Point<2>, Point<2>>{c0, c1}, {c1, c2}, {c2, c3}, {c3, c0}})
+      {
+        Mesh::Crack<2> crack;
+        crack.points = {{p, q}};
+        square.push_back(crack);
+      }
+    RNPSettings s;
+    s.horizon = 1.5;
+    RNPSystem<2>::Loads loads;
+    loads.constrained.assign(2 * x.size(), 0);
+    for (unsigned int i = 0; i < x.size(); ++i)
+      if (x[i][0] == 0.)
+        loads.constrained[2 * i] = loads.constrained[2 * i + 1] = 1;
+    loads.prescribed = [](double, std::vector<double> &) {};
+    RNPSystem<2> system(
+      x,
+      V,
+      s,
+      [&square](const Point<2> &p, const Point<2> &q) {
+        return Mesh::cut_by_any<2>(square, p, q);
+      },
+      loads);
+    EXPECT_EQ(system.n_decoupled_nodes(), 1u);
+    EXPECT_EQ(system.family_size(12), 0u);
+    Drivers::SystemInterface::Vector u, r;
+    system.initialize_vector(u);
+    system.residual(u, 1., r, true);
+    EXPECT_TRUE(system.check_stability().stable());
+  }
+
   TEST(RNPSystem, SoftenedBondMakesTheTangentIndefinite)
   {
     // Two nodes, one clamped: one bond past r_c has a negative stiffness.

@@ -126,6 +126,12 @@ namespace pdfem
       {
         return n_cut;
       }
+      /// Nodes without a bond or an element, held at zero displacement.
+      unsigned int
+      n_decoupled_nodes() const
+      {
+        return n_decoupled;
+      }
       /// Bond count of each node (its family size).
       unsigned int
       family_size(unsigned int i) const
@@ -202,7 +208,8 @@ namespace pdfem
       // families, CSR, symmetric (j in F(i) iff i in F(j))
       std::vector<std::size_t>  offsets;
       std::vector<unsigned int> members;
-      std::size_t               n_cut = 0;
+      std::size_t               n_cut       = 0;
+      unsigned int              n_decoupled = 0;
       // free DoF -> band row (-1: constrained)
       std::vector<long>   band_row;
       Solvers::BandedLDLT K;
