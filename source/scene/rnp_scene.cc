@@ -446,6 +446,34 @@ namespace pdfem
                               "_" + c);
         for (const auto &c : component_names<dim>())
           columns.push_back("max_abs_displacement_" + c);
+        // 2D pre-cracks: the tip p1 advanced to the farthest softened node
+        // (d > 1) within a horizon of the crack's line, ahead of p0.
+        const unsigned int n_tips = dim == 2 ? settings.cracks.size() : 0;
+        for (unsigned int k = 1; k <= n_tips; ++k)
+          for (const char *c : {"_x", "_y"})
+            columns.push_back("tip" + std::to_string(k) + c);
+        auto crack_tips = [&]() {
+          std::vector<std::pair<Point<dim>, double>> tips; // tip, advance
+          const auto &d = system.damage_history();
+          for (unsigned int k = 0; k < n_tips; ++k)
+            {
+              const Point<dim>    &p0      = settings.cracks[k].points[0];
+              const Point<dim>    &p1      = settings.cracks[k].points[dim - 1];
+              const double         L       = p0.distance(p1);
+              const Tensor<1, dim> e       = (p1 - p0) / L;
+              double               advance = 0.;
+              for (unsigned int i = 0; i < x.size(); ++i)
+                if (d[i] > 1.)
+                  {
+                    const Tensor<1, dim> r = x[i] - p0;
+                    const double         s = r * e;
+                    if (s > 0. && (r - s * e).norm() <= model.horizon)
+                      advance = std::max(advance, s - L);
+                  }
+              tips.emplace_back(p1 + advance * e, advance);
+            }
+          return tips;
+        };
         columns.push_back("wall_seconds");
         IO::History history(setup.out_dir + "/history.csv", columns, true);
 
@@ -511,6 +539,9 @@ namespace pdfem
                 m = std::max(m, std::abs(last_u[dim * i + c]));
               row.push_back(m);
             }
+          for (const auto &tip : crack_tips())
+            for (unsigned int c = 0; c < dim; ++c)
+              row.push_back(tip.first[c]);
           row.push_back(seconds_since(setup.total_start));
           history.add_row(row);
           if (progress)
@@ -680,6 +711,17 @@ namespace pdfem
         json.value("max_damage", *std::max_element(d.begin(), d.end()));
         json.value("softened_nodes", static_cast<unsigned long>(n_soft));
         json.value("softened_x_max", soft_x);
+        {
+          const auto tips = crack_tips();
+          for (unsigned int k = 0; k < tips.size(); ++k)
+            {
+              json.begin_object("tip" + std::to_string(k + 1));
+              for (unsigned int c = 0; c < dim; ++c)
+                json.value(comps[c], tips[k].first[c]);
+              json.value("advance", tips[k].second);
+              json.end_object();
+            }
+        }
         json.begin_object("reaction");
         for (std::size_t s = 0; s < set_names.size(); ++s)
           {
