@@ -180,5 +180,129 @@ namespace pdfem
           throw RunFailure("unstable", s.str());
         }
     }
+    void
+    NewtonDriver::run_arc_length(
+      SystemInterface                                    &system,
+      SystemInterface::Vector                            &u,
+      const SystemInterface::Vector                      &q,
+      const unsigned int                                  max_steps,
+      const std::function<void(const StepRecord &)>      &on_step,
+      StabilityInterface                                 *stability,
+      const std::function<void(const StabilityReport &)> &on_check)
+    {
+      result = NewtonOutcome();
+      SystemInterface::Vector r, dq, dr, w, last = u, increment;
+      system.initialize_vector(r);
+      system.initialize_vector(dq);
+      system.initialize_vector(dr);
+      // ---- first step: load control
+      StepRecord   first;
+      const double t0 = 1. / std::max(1u, settings.load_steps);
+      first.step      = 1;
+      first.time = first.load_factor = t0;
+      if (!solve_step(system, u, t0, first))
+        throw RunFailure("diverged",
+                         "arc length: the first, load-controlled step "
+                         "does not converge");
+      increment = u;
+      increment -= last;
+      double dl = increment.l2_norm(), lambda = t0;
+      last                    = u;
+      result.last_stable_load = lambda;
+      if (stability != nullptr && on_check)
+        on_check(stability->check_stability());
+      on_step(first);
+
+      unsigned int level = 0;
+      for (unsigned int step = 2; step <= max_steps && lambda < 1.;)
+        {
+          // predictor along K^-1 q (K of the last converged state)
+          system.residual(last, lambda, r, true);
+          system.solve_linear(dq, q);
+          double sign = (dq * increment) >= 0. ? 1. : -1.;
+          double dlam = sign * dl / dq.l2_norm();
+          u           = last;
+          u.add(dlam, dq);
+          double     lam = lambda + dlam;
+          StepRecord record;
+          record.step = step;
+          bool   ok   = false;
+          double ref  = 0.;
+          for (unsigned int it = 0; it <= settings.max_iterations; ++it)
+            {
+              const double norm = system.residual(u, lam, r, true);
+              if (!std::isfinite(norm))
+                break;
+              const double scale = std::max(system.force_scale(), ref);
+              if (it == 0)
+                ref = std::max(norm, system.force_scale());
+              record.relative_residual = scale > 0. ? norm / scale : norm;
+              if (norm <= settings.residual_tolerance * scale)
+                {
+                  ok = true;
+                  break;
+                }
+              if (it == settings.max_iterations)
+                break;
+              system.solve_linear(dr, r);
+              system.solve_linear(dq, q);
+              // |Delta u + dr + dlam dq| = dl, Delta u = u - last
+              w = u;
+              w -= last;
+              w += dr;
+              const double a = dq * dq, b = 2. * (dq * w), c = w * w - dl * dl;
+              const double disc = b * b - 4. * a * c;
+              if (!(disc >= 0.) || !(a > 0.))
+                break;
+              const double x1 = (-b + std::sqrt(disc)) / (2. * a);
+              const double x2 = (-b - std::sqrt(disc)) / (2. * a);
+              // the root that keeps the increment closest to the last one
+              w.add(x1, dq);
+              const double c1 = w * increment;
+              w.add(x2 - x1, dq);
+              const double c2 = w * increment;
+              const double d  = c1 >= c2 ? x1 : x2;
+              u += dr;
+              u.add(d, dq);
+              lam += d;
+              ++record.newton_iterations;
+              record.linear_iterations += 2;
+            }
+          if (!ok)
+            {
+              if (level == settings.max_step_cuts)
+                {
+                  u                   = last;
+                  result.failure_load = lam;
+                  throw RunFailure("diverged",
+                                   "arc length: no convergence with the "
+                                   "smallest arc length");
+                }
+              ++level;
+              ++result.n_cuts;
+              dl *= 0.5;
+              continue;
+            }
+          level     = 0;
+          increment = u;
+          increment -= last;
+          last        = u;
+          lambda      = lam;
+          record.time = record.load_factor = lambda;
+          if (stability != nullptr)
+            {
+              result.last_check = stability->check_stability();
+              if (result.last_check.stable())
+                result.last_stable_load =
+                  std::max(result.last_stable_load, lambda);
+              else
+                ++result.n_unstable_states;
+              if (on_check)
+                on_check(result.last_check);
+            }
+          on_step(record);
+          ++step;
+        }
+    }
   } // namespace Drivers
 } // namespace pdfem

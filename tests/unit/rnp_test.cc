@@ -683,6 +683,55 @@ namespace
     EXPECT_TRUE(system.check_stability().stable());
   }
 
+  TEST(RNPBar, ArcLengthFollowsThePathThroughTheLimitLoad)
+  {
+    // The bar of ForceControlEndsUnstableAtTheLimitLoad with the load
+    // factor as an unknown: the path passes the peak 598.9 (specs/001 A7)
+    // and comes down on the softening branch, whose states are unstable
+    // (measured: 598.2 at step 14, then 582, 484, 361, ... down to 2.4 at
+    // step 30 with the end displacement still growing).
+    Bar                bar(0.5, 4000., 1000.);
+    RNPSystem<1>       system(bar.x, bar.V, bar.s, {}, bar.loads);
+    Parameters::Driver settings;
+    settings.type               = "newton";
+    settings.load_steps         = 20;
+    settings.residual_tolerance = 1e-10;
+    settings.max_iterations     = 25;
+    settings.max_step_cuts      = 6;
+    Drivers::NewtonDriver            driver(settings);
+    Drivers::SystemInterface::Vector u, q;
+    system.initialize_vector(u);
+    system.initialize_vector(q);
+    q[bar.x.size() - 1] = 1000.;
+    double       peak = 0., after = 1e300, u_end_at_peak = 0.;
+    unsigned int n_unstable = 0, n_steps = 0;
+    driver.run_arc_length(
+      system,
+      u,
+      q,
+      30,
+      [&](const Drivers::StepRecord &r) {
+        ++n_steps;
+        if (r.load_factor > peak)
+          {
+            peak          = r.load_factor;
+            u_end_at_peak = u[bar.x.size() - 1];
+            after         = 1e300;
+          }
+        else
+          after = std::min(after, r.load_factor);
+      },
+      &system,
+      [&](const Drivers::StabilityReport &report) {
+        n_unstable += !report.stable();
+      });
+    EXPECT_EQ(n_steps, 30u);
+    EXPECT_NEAR(1000. * peak, 598.9, 0.005 * 598.9);
+    EXPECT_LT(after, 0.9 * peak); // well down the softening branch
+    EXPECT_GT(n_unstable, 0u);
+    EXPECT_GT(u_end_at_peak, 0.);
+  }
+
   TEST(RNPSystem, SoftenedBondMakesTheTangentIndefinite)
   {
     // Two nodes, one clamped: one bond past r_c has a negative stiffness.

@@ -109,6 +109,31 @@ namespace pdfem
         return result;
       }
 
+      /**
+       * Arc-length continuation (Crisfield's cylindrical constraint
+       * |Delta u| = Delta l on the increment of a step), for soft loading
+       * with f_ext(t) = t q and time-independent prescribed values: the load
+       * factor becomes an unknown, so the path is followed through limit
+       * points (folds, snap-backs) where load control stops 'unstable'.
+       * The first step is load-controlled (1 / `Load steps`), its |Delta u|
+       * sets Delta l; each step is a predictor along the tangent K^-1 q
+       * (oriented by the previous increment) and Newton corrections with
+       * the constraint (two solves per iteration, one factorisation); a
+       * failing step halves Delta l (`Max step cuts` in a row). The run ends
+       * when the load factor reaches 1, or after @p max_steps steps.
+       * Every converged state is checked (StabilityReport in @p on_check,
+       * not rejected: past a fold the path is unstable by nature).
+       */
+      void
+      run_arc_length(
+        SystemInterface                                    &system,
+        SystemInterface::Vector                            &u,
+        const SystemInterface::Vector                      &q,
+        unsigned int                                        max_steps,
+        const std::function<void(const StepRecord &)>      &on_step,
+        StabilityInterface                                 *stability,
+        const std::function<void(const StabilityReport &)> &on_check = {});
+
     private:
       /// Newton at load factor t from u; true if converged.
       bool
