@@ -507,13 +507,17 @@ namespace pdfem
       prm.enter_subsection("Driver");
       prm.declare_entry("Type",
                         "static",
-                        Selection("static|newton"),
+                        Selection("static|newton|arc length"),
                         "static: equilibrium under the full load, reached in "
                         "'Load steps' equal increments of the load factor t. "
                         "newton: the same with a line search, load step "
                         "cutting and a stability check of every converged "
                         "step (nonlinear models: rnp); a step that cannot be "
-                        "completed stops the run with exit state 'unstable'.");
+                        "completed stops the run with exit state 'unstable'. "
+                        "arc length: the load factor becomes an unknown "
+                        "(Crisfield's arc-length continuation), so the path "
+                        "is followed through limit points; soft loading "
+                        "linear in t only (rnp).");
       prm.declare_entry("Load steps",
                         "1",
                         Integer(1),
@@ -542,6 +546,13 @@ namespace pdfem
                         Double(0., 1.),
                         "newton: a cut multiplies the load increment by this "
                         "(0 < factor < 1).");
+      prm.declare_entry("Arc length steps",
+                        "50",
+                        Integer(1),
+                        "arc length: steps along the path (the run also ends "
+                        "when the load factor reaches 1). The first step is "
+                        "load-controlled, 1 / Load steps; its displacement "
+                        "increment sets the arc length.");
       prm.declare_entry("Line search",
                         "true",
                         Bool(),
@@ -566,6 +577,7 @@ namespace pdfem
       max_step_cuts      = prm.get_integer("Max step cuts");
       step_cut_factor    = prm.get_double("Step cut factor");
       line_search        = prm.get_bool("Line search");
+      arc_length_steps   = prm.get_integer("Arc length steps");
       stability_check    = prm.get_bool("Stability check");
       prm.leave_subsection();
       if (!(step_cut_factor > 0. && step_cut_factor < 1.))
@@ -764,11 +776,11 @@ namespace pdfem
       linear_solver.parse(prm, file);
       driver.parse(prm, file);
       output.parse(prm, file);
-      if (driver.type == "newton" && peridynamics.model != "rnp")
+      if (driver.type != "static" && peridynamics.model != "rnp")
         throw InputError(file,
                          "Driver/Type",
-                         "the newton driver (stability check) runs the rnp "
-                         "model only; the " +
+                         "the " + driver.type +
+                           " driver runs the rnp model only; the " +
                            peridynamics.model + " scene is linear",
                          "static, or Peridynamics/Model = rnp");
     }

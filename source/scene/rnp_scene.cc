@@ -507,12 +507,13 @@ namespace pdfem
         TrilinosWrappers::MPI::Vector u;
         system.initialize_vector(u);
         std::vector<double> last_u(n_dofs, 0.);
-        double              last_load = 0.;
-        unsigned int        n_steps   = 0;
-        const auto          on_step   = [&](const Drivers::StepRecord &record) {
+        double              last_load = 0., peak_load = 0.;
+        unsigned int        n_steps = 0;
+        const auto          on_step = [&](const Drivers::StepRecord &record) {
           n_steps = record.step;
           last_u.assign(u.begin(), u.end());
           last_load = record.load_factor;
+          peak_load = std::max(peak_load, last_load);
           system.update_damage_history(last_u);
           const auto  &d    = system.damage_history();
           const double dmax = *std::max_element(d.begin(), d.end());
@@ -561,7 +562,59 @@ namespace pdfem
         start = clock::now();
         try
           {
-            if (setup.driver.type == "newton")
+            if (setup.driver.type == "arc length")
+              {
+                // f_ext(t) = t q and prescribed values independent of t
+                std::vector<double> f0(n_dofs), f1(n_dofs), fh(n_dofs),
+                  u0(n_dofs, 0.), u1(n_dofs, 0.);
+                loads.external_force(0., f0);
+                loads.external_force(1., f1);
+                loads.external_force(0.5, fh);
+                loads.prescribed(0., u0);
+                loads.prescribed(1., u1);
+                double fmax = 0., fdev = 0., udev = 0.;
+                for (unsigned int d = 0; d < n_dofs; ++d)
+                  {
+                    fmax = std::max(fmax, std::abs(f1[d]));
+                    fdev = std::max(
+                      {fdev, std::abs(f0[d]), std::abs(fh[d] - 0.5 * f1[d])});
+                    udev = std::max(udev, std::abs(u1[d] - u0[d]));
+                  }
+                if (fdev > 1e-12 * fmax || udev > 0. || fmax == 0.)
+                  throw InputError(
+                    prm.file,
+                    "Driver/Type",
+                    "arc length needs loads proportional to t (tractions "
+                    "and body force t q, prescribed values independent of t)",
+                    "such loads, or the newton driver");
+                TrilinosWrappers::MPI::Vector q;
+                system.initialize_vector(q);
+                for (unsigned int d = 0; d < n_dofs; ++d)
+                  if (!loads.constrained[d])
+                    q[d] = f1[d];
+                q.compress(VectorOperation::insert);
+                Drivers::NewtonDriver driver(setup.driver);
+                try
+                  {
+                    driver.run_arc_length(system,
+                                          u,
+                                          q,
+                                          setup.driver.arc_length_steps,
+                                          on_step,
+                                          &system);
+                  }
+                catch (...)
+                  {
+                    outcome             = driver.outcome();
+                    timings["assembly"] = driver.timings().assembly;
+                    timings["solve"]    = driver.timings().solve;
+                    throw;
+                  }
+                outcome             = driver.outcome();
+                timings["assembly"] = driver.timings().assembly;
+                timings["solve"]    = driver.timings().solve;
+              }
+            else if (setup.driver.type == "newton")
               {
                 Drivers::NewtonDriver driver(setup.driver);
                 try
@@ -677,6 +730,7 @@ namespace pdfem
         json.begin_object("stability");
         json.value("last_stable_load_factor", outcome.last_stable_load);
         json.value("failure_load_factor", outcome.failure_load);
+        json.value("peak_load_factor", peak_load);
         json.value("step_cuts", static_cast<unsigned long>(outcome.n_cuts));
         json.value("unstable_states",
                    static_cast<unsigned long>(outcome.n_unstable_states));

@@ -133,10 +133,11 @@ namespace pdfem
       double       residual_tolerance = 1e-9; // relative to |f_ext| (or |r_0|)
       unsigned int max_iterations     = 10;
       // newton only: load step cutting, line search, stability check
-      unsigned int max_step_cuts   = 4;
-      double       step_cut_factor = 0.25;
-      bool         line_search     = true;
-      bool         stability_check = true;
+      unsigned int max_step_cuts    = 4;
+      double       step_cut_factor  = 0.25;
+      bool         line_search      = true;
+      bool         stability_check  = true;
+      unsigned int arc_length_steps = 50; // arc length only
 
       static void
       declare(dealii::ParameterHandler &prm);
