@@ -310,10 +310,13 @@ namespace pdfem
       prm.enter_subsection("Peridynamics");
       prm.declare_entry("Model",
                         "pdlsm",
-                        Selection("pdlsm"),
+                        Selection("pdlsm|rnp"),
                         "PD model of the PD cells: 'pdlsm' (peridynamic "
                         "least squares minimisation, second-order Taylor "
-                        "basis; Madenci et al. 2019, Liu & Xin 2021).");
+                        "basis; Madenci et al. 2019, Liu & Xin 2021), or "
+                        "'rnp' (regularized nonlinear pairwise cohesive "
+                        "bonds, Diehl & Lipton 2022; every cell PD, see "
+                        "subsection RNP).");
       prm.declare_entry("Horizon factor",
                         "3",
                         Double(),
@@ -506,13 +509,19 @@ namespace pdfem
       prm.declare_entry(
         "Type",
         "static",
-        Selection("static|quasi-static"),
+        Selection("static|quasi-static|newton|arc length"),
         "static: equilibrium under the full load, reached in 'Load steps' "
         "equal increments of the load factor t. quasi-static: crack growth "
         "under a slowly increasing load: after each equilibrium the "
         "Fracture criterion is checked; where cracks grew the load is held "
         "and equilibrium found again, otherwise t grows by 'Load "
-        "increment'. 'Load steps' is then the number of steps in all.");
+        "increment'. 'Load steps' is then the number of steps in all. "
+        "newton: the static stepping with a line search, load step cutting "
+        "and a stability check of every converged step (nonlinear models: "
+        "rnp); a step that cannot be completed stops the run with exit "
+        "state 'unstable'. arc length: the load factor becomes an unknown "
+        "(Crisfield's arc-length continuation), so the path is followed "
+        "through limit points; soft loading linear in t only (rnp).");
       prm.declare_entry("Load steps",
                         "1",
                         Integer(1),
@@ -550,12 +559,41 @@ namespace pdfem
                         "10",
                         Integer(1),
                         "Equilibrium iterations per load step before the run "
-                        "stops with exit state 'diverged'.");
+                        "stops with exit state 'diverged' (newton: before the "
+                        "step is cut).");
+      prm.declare_entry("Max step cuts",
+                        "4",
+                        Integer(0),
+                        "newton: cuts of the load increment in a row (two "
+                        "converged steps undo one) before the run stops with "
+                        "exit state 'unstable'.");
+      prm.declare_entry("Step cut factor",
+                        "0.25",
+                        Double(0., 1.),
+                        "newton: a cut multiplies the load increment by this "
+                        "(0 < factor < 1).");
+      prm.declare_entry("Arc length steps",
+                        "50",
+                        Integer(1),
+                        "arc length: steps along the path (the run also ends "
+                        "when the load factor reaches 1). The first step is "
+                        "load-controlled, 1 / Load steps; its displacement "
+                        "increment sets the arc length.");
+      prm.declare_entry("Line search",
+                        "true",
+                        Bool(),
+                        "newton: backtracking on the residual norm.");
+      prm.declare_entry("Stability check",
+                        "true",
+                        Bool(),
+                        "newton: test every converged state for stability "
+                        "(reduced tangent positive definite); an unstable "
+                        "state is rejected like a diverged step.");
       prm.leave_subsection();
     }
 
     void
-    Driver::parse(ParameterHandler &prm, const std::string &)
+    Driver::parse(ParameterHandler &prm, const std::string &file)
     {
       prm.enter_subsection("Driver");
       type                    = prm.get("Type");
@@ -565,6 +603,93 @@ namespace pdfem
       hold_load_while_growing = prm.get_bool("Hold load while cracks grow");
       residual_tolerance      = prm.get_double("Residual tolerance");
       max_iterations          = prm.get_integer("Max iterations");
+      max_step_cuts      = prm.get_integer("Max step cuts");
+      step_cut_factor    = prm.get_double("Step cut factor");
+      line_search        = prm.get_bool("Line search");
+      arc_length_steps   = prm.get_integer("Arc length steps");
+      stability_check    = prm.get_bool("Stability check");
+      prm.leave_subsection();
+      if (!(step_cut_factor > 0. && step_cut_factor < 1.))
+        throw InputError(file,
+                         "Driver/Step cut factor",
+                         number(step_cut_factor) + " is not between 0 and 1",
+                         "0 < factor < 1");
+    }
+
+    // ------------------------------------------------------------------- RNP
+    void
+    RNP::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Peridynamics");
+      prm.enter_subsection("RNP");
+      prm.declare_entry("Calibration",
+                        "moduli",
+                        Selection("moduli|constants"),
+                        "moduli: C beta from Material/Young's modulus and C "
+                        "from the fracture energy (doc/theory.md, RNP "
+                        "calibration); the Poisson's ratio must be the "
+                        "model's (1/3 plane stress, 1/4 plane strain and 3D). "
+                        "constants: C and beta as given.");
+      prm.declare_entry("C",
+                        "0",
+                        Double(0.),
+                        "C in g(r) = C (1 - exp(-beta r^2)) (constants).");
+      prm.declare_entry("beta",
+                        "0",
+                        Double(0.),
+                        "beta in g(r) = C (1 - exp(-beta r^2)) (constants).");
+      prm.declare_entry("Fracture energy",
+                        "0",
+                        Double(0.),
+                        "G_c [J/m^2] (moduli): C = G_c omega_d / (2 "
+                        "omega_(d-1) M_d).");
+      prm.declare_entry("Influence function",
+                        "constant",
+                        Selection("constant|linear"),
+                        "J(|xi|/horizon): constant 1 or linear 1 - |xi|/eps.");
+      prm.declare_entry("Force scaling",
+                        "paper",
+                        Selection("paper|prototype"),
+                        "paper: g'(sqrt|xi| S)/sqrt|xi| (eq. 27, the one the "
+                        "calibration holds for); prototype: g'/|xi| (the "
+                        "Python prototype, for regression only).");
+      prm.declare_entry("Nodal volumes",
+                        "cells",
+                        Selection("cells|uniform"),
+                        "cells: sum of V_cell / n_vertices; uniform: h^dim "
+                        "for every node (the paper's lattice), h the largest "
+                        "cell size.");
+      prm.declare_entry("Dirichlet layer",
+                        "1",
+                        Double(0.),
+                        "Prescribed displacements act on every node within "
+                        "this many horizons of the named boundary (the "
+                        "nonlocal boundary layer); 0: the boundary's nodes "
+                        "only.");
+      prm.declare_entry("Tangent",
+                        "analytic",
+                        Selection("analytic|finite difference"),
+                        "analytic (eq. 33-34 corrected) or central finite "
+                        "differences of the nodal forces (for comparison).");
+      prm.leave_subsection();
+      prm.leave_subsection();
+    }
+
+    void
+    RNP::parse(ParameterHandler &prm, const std::string &)
+    {
+      prm.enter_subsection("Peridynamics");
+      prm.enter_subsection("RNP");
+      calibration     = prm.get("Calibration");
+      C               = prm.get_double("C");
+      beta            = prm.get_double("beta");
+      fracture_energy = prm.get_double("Fracture energy");
+      influence       = prm.get("Influence function");
+      force_scaling   = prm.get("Force scaling");
+      nodal_volumes   = prm.get("Nodal volumes");
+      dirichlet_layer = prm.get_double("Dirichlet layer");
+      tangent         = prm.get("Tangent");
+      prm.leave_subsection();
       prm.leave_subsection();
     }
 
@@ -722,6 +847,7 @@ namespace pdfem
       Mesh::declare(prm);
       Material::declare(prm);
       Peridynamics::declare(prm);
+      RNP::declare(prm);
       BoundaryConditions::declare(prm);
       LinearSolver::declare(prm);
       Driver::declare(prm);
@@ -779,11 +905,31 @@ namespace pdfem
       mesh.parse(prm, file);
       material.parse(prm, file, dim);
       peridynamics.parse(prm, file, dim);
+      rnp.parse(prm, file);
       boundary_conditions.parse(prm, file, dim);
       linear_solver.parse(prm, file);
       driver.parse(prm, file);
       fracture.parse(prm, file);
       output.parse(prm, file);
+      const bool nonlinear_driver =
+        driver.type == "newton" || driver.type == "arc length";
+      if (nonlinear_driver && peridynamics.model != "rnp")
+        throw InputError(file,
+                         "Driver/Type",
+                         "the " + driver.type +
+                           " driver runs the rnp model only; the " +
+                           peridynamics.model + " scene is linear",
+                         "static or quasi-static, or Peridynamics/Model = "
+                         "rnp");
+      if (peridynamics.model == "rnp" &&
+          (driver.type == "quasi-static" || fracture.criterion != "none"))
+        throw InputError(file,
+                         driver.type == "quasi-static" ? "Driver/Type" :
+                                                         "Fracture/Criterion",
+                         "the rnp model softens its bonds itself: it takes "
+                         "no crack criterion and no quasi-static driver",
+                         "Driver/Type = static, newton or arc length with "
+                         "Fracture/Criterion = none");
     }
 
     int

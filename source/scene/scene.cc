@@ -377,12 +377,16 @@ namespace pdfem
               Setup<2> setup;
               setup.total_start = start;
               setup_from_prm<2>(prm, options, comm, setup);
+              if (prm.peridynamics.model == "rnp")
+                return internal::execute_rnp<2>(setup, prm, options, comm);
               return internal::execute<2>(setup, options, comm);
             }
 #if PDFEM_WITH_3D
           Setup<3> setup;
           setup.total_start = start;
           setup_from_prm<3>(prm, options, comm, setup);
+          if (prm.peridynamics.model == "rnp")
+            return internal::execute_rnp<3>(setup, prm, options, comm);
           return internal::execute<3>(setup, options, comm);
 #else
           throw InputError(file,

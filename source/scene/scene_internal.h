@@ -88,6 +88,15 @@ namespace pdfem
                            MPI_Comm                 comm,
                            Setup<dim>              &setup);
 
+      /// Run a scene with Peridynamics/Model = rnp (rnp_scene.cc): every
+      /// vertex an RNP node, Newton driver with the stability check.
+      template <int dim>
+      int
+      execute_rnp(Setup<dim>              &setup,
+                  const Parameters::Scene &prm,
+                  const RunOptions        &options,
+                  MPI_Comm                 comm);
+
       /// Set up the coupled system, run the driver, write every output.
       template <int dim>
       int

@@ -142,6 +142,35 @@ namespace pdfem
       bool         hold_load_while_growing = true;
       double       residual_tolerance = 1e-9; // relative to |f_ext| (or |r_0|)
       unsigned int max_iterations     = 10;
+      // newton only: load step cutting, line search, stability check
+      unsigned int max_step_cuts    = 4;
+      double       step_cut_factor  = 0.25;
+      bool         line_search      = true;
+      bool         stability_check  = true;
+      unsigned int arc_length_steps = 50; // arc length only
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm, const std::string &file);
+    };
+
+    /**
+     * `subsection Peridynamics/RNP`: the RNP bond model (Model = rnp;
+     * specs/000 §1). C and beta are given, or calibrated: C beta from
+     * Material/Young's modulus, C from the fracture energy.
+     */
+    struct RNP
+    {
+      std::string calibration     = "moduli"; // moduli | constants
+      double      C               = 0.;
+      double      beta            = 0.;
+      double      fracture_energy = 0.;         // G_c (calibration = moduli)
+      std::string influence       = "constant"; // constant | linear
+      std::string force_scaling   = "paper";    // paper | prototype
+      std::string nodal_volumes   = "cells";    // cells | uniform
+      double      dirichlet_layer = 1.;         // layer thickness / horizon
+      std::string tangent         = "analytic"; // analytic | finite difference
 
       static void
       declare(dealii::ParameterHandler &prm);
@@ -201,6 +230,7 @@ namespace pdfem
       Mesh               mesh;
       Material           material;
       Peridynamics       peridynamics;
+      RNP                rnp;
       BoundaryConditions boundary_conditions;
       LinearSolver       linear_solver;
       Driver             driver;

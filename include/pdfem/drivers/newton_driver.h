@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef PDFEM_DRIVERS_NEWTON_DRIVER_H
+#define PDFEM_DRIVERS_NEWTON_DRIVER_H
+
+#include <pdfem/drivers/static_driver.h>
+#include <pdfem/drivers/system_interface.h>
+#include <pdfem/io/parameters.h>
+
+#include <cstddef>
+#include <functional>
+
+namespace pdfem
+{
+  namespace Drivers
+  {
+    /** The stability of a converged state (specs/001 §2.5). */
+    struct StabilityReport
+    {
+      /// The reduced tangent is numerically singular (a zero pivot).
+      bool singular = false;
+      /// Its number of negative eigenvalues (0: positive definite, stable).
+      std::size_t n_negative = 0;
+      /// Smallest |pivot| / max |K_ii| of its factorisation.
+      double smallest_relative_pivot = 0.;
+
+      bool
+      stable() const
+      {
+        return !singular && n_negative == 0;
+      }
+    };
+
+    /**
+     * A system whose tangent can be tested for definiteness: the tangent
+     * last assembled by residual(), reduced to the free DoFs and made
+     * symmetric (rows scaled by the nodal volumes), is it positive definite?
+     */
+    class StabilityInterface
+    {
+    public:
+      virtual ~StabilityInterface() = default;
+
+      virtual StabilityReport
+      check_stability() = 0;
+    };
+
+    /** Why a Newton run stopped early, and where. */
+    struct NewtonOutcome
+    {
+      /// The last load factor with a converged, stable state (0: none).
+      double last_stable_load = 0.;
+      /// The load factor that could not be reached (unstable runs).
+      double failure_load = 0.;
+      /// Load step cuts made in the whole run.
+      unsigned int n_cuts = 0;
+      /// The last stability check of a converged state.
+      StabilityReport last_check;
+      /// Converged states rejected because they were not stable.
+      unsigned int n_unstable_states = 0;
+    };
+
+    /**
+     * Newton's method with load stepping for soft (forces, tractions, body
+     * force) and hard (prescribed displacement) loading (specs/000 §3,
+     * specs/001 §2.3-2.5), in pdfem's convention K du = r, r = f_ext -
+     * f_int.
+     *
+     * - The load factor goes from 0 to 1 in `Load steps` increments; each
+     *   step starts from the secant extrapolation of the last two converged
+     *   states with the prescribed DoFs at their new values.
+     * - Each iteration is damped by a backtracking line search on |r|
+     *   (accept u + a du once |r| <= (1 - 1e-4 a) |r_k|; a = 1, 1/2, ...,
+     *   1/32), so that an iterate does not leave the basin of the stable
+     *   branch; with the exact Jacobian du is a descent direction of |r|^2,
+     *   so no decrease down to 1/32 fails the step at once.
+     * - A step converges when |r| <= tol * max(|r_0|, |f_ext|, |f_int|).
+     * - At every converged step the stability of the state is checked
+     *   (StabilityInterface: the reduced tangent must be positive definite;
+     *   Newton also converges to unstable equilibria, specs/001 §3.1).
+     * - A step that does not converge in `Max iterations`, or converges to
+     *   an unstable state, is cut: the increment times `Step cut factor`,
+     *   down to `Max step cuts` cuts in a row (the paper cut by 10 then
+     *   100, by hand); two successes in a row undo one cut. When the
+     *   smallest increment fails the run stops with RunFailure("unstable")
+     *   and outcome() says at which load; the solution is the last stable
+     *   state, never a rejected iterate.
+     */
+    class NewtonDriver
+    {
+    public:
+      explicit NewtonDriver(const Parameters::Driver &settings);
+
+      /// @p u: initial guess in, last stable state out. @p stability may
+      /// be null (no stability check).
+      void
+      run(SystemInterface                               &system,
+          SystemInterface::Vector                       &u,
+          const std::function<void(const StepRecord &)> &on_step,
+          StabilityInterface                            *stability);
+
+      const DriverTimings &
+      timings() const
+      {
+        return time_spent;
+      }
+      const NewtonOutcome &
+      outcome() const
+      {
+        return result;
+      }
+
+      /**
+       * Arc-length continuation (Crisfield's cylindrical constraint
+       * |Delta u| = Delta l on the increment of a step), for soft loading
+       * with f_ext(t) = t q and time-independent prescribed values: the load
+       * factor becomes an unknown, so the path is followed through limit
+       * points (folds, snap-backs) where load control stops 'unstable'.
+       * The first step is load-controlled (1 / `Load steps`), its |Delta u|
+       * sets Delta l; each step is a predictor along the tangent K^-1 q
+       * (oriented by the previous increment) and Newton corrections with
+       * the constraint (two solves per iteration, one factorisation); a
+       * failing step halves Delta l (`Max step cuts` in a row). The run ends
+       * when the load factor reaches 1, or after @p max_steps steps.
+       * Every converged state is checked (StabilityReport in @p on_check,
+       * not rejected: past a fold the path is unstable by nature).
+       */
+      void
+      run_arc_length(
+        SystemInterface                                    &system,
+        SystemInterface::Vector                            &u,
+        const SystemInterface::Vector                      &q,
+        unsigned int                                        max_steps,
+        const std::function<void(const StepRecord &)>      &on_step,
+        StabilityInterface                                 *stability,
+        const std::function<void(const StabilityReport &)> &on_check = {});
+
+    private:
+      /// Newton at load factor t from u; true if converged.
+      bool
+      solve_step(SystemInterface         &system,
+                 SystemInterface::Vector &u,
+                 double                   t,
+                 StepRecord              &record);
+
+      Parameters::Driver settings;
+      DriverTimings      time_spent;
+      NewtonOutcome      result;
+    };
+  } // namespace Drivers
+} // namespace pdfem
+
+#endif

@@ -1,0 +1,308 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <pdfem/base/exceptions.h>
+#include <pdfem/drivers/newton_driver.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace pdfem
+{
+  namespace Drivers
+  {
+    namespace
+    {
+      using clock = std::chrono::steady_clock;
+
+      double
+      seconds_since(const clock::time_point &start)
+      {
+        return std::chrono::duration<double>(clock::now() - start).count();
+      }
+    } // namespace
+
+    NewtonDriver::NewtonDriver(const Parameters::Driver &settings)
+      : settings(settings)
+    {}
+
+    bool
+    NewtonDriver::solve_step(SystemInterface         &system,
+                             SystemInterface::Vector &u,
+                             const double             t,
+                             StepRecord              &record)
+    {
+      SystemInterface::Vector r, du, trial, r_trial;
+      system.initialize_vector(du);
+      system.initialize_vector(trial);
+      system.initialize_vector(r_trial);
+      system.initialize_vector(r);
+      auto   start = clock::now();
+      double norm  = system.residual(u, t, r, true);
+      time_spent.assembly += seconds_since(start);
+      if (!std::isfinite(norm))
+        return false;
+      const double reference = std::max(norm, system.force_scale());
+      for (unsigned int it = 0;; ++it)
+        {
+          const double scale       = std::max(reference, system.force_scale());
+          record.relative_residual = scale > 0. ? norm / scale : norm;
+          if (norm <= settings.residual_tolerance * scale ||
+              (scale == 0. && norm == 0.))
+            return true;
+          if (it == settings.max_iterations)
+            return false;
+          start = clock::now();
+          record.linear_iterations += system.solve_linear(du, r);
+          time_spent.solve += seconds_since(start);
+          if (!std::isfinite(du.l2_norm()))
+            return false;
+          ++record.newton_iterations;
+
+          // Backtracking on |r|; the trial residual assembles the tangent,
+          // which is the next iteration's when the trial is accepted.
+          double alpha = 1., norm_trial = 0.;
+          for (unsigned int cut = 0;; ++cut)
+            {
+              trial = u;
+              trial.add(alpha, du);
+              start      = clock::now();
+              norm_trial = system.residual(trial, t, r_trial, true);
+              time_spent.assembly += seconds_since(start);
+              const bool decrease =
+                std::isfinite(norm_trial) &&
+                (norm_trial <= (1. - 1e-4 * alpha) * norm ||
+                 norm_trial <= settings.residual_tolerance *
+                                 std::max(reference, system.force_scale()));
+              if (decrease || !settings.line_search)
+                break;
+              // With the exact Jacobian du is a descent direction of |r|^2:
+              // no decrease down to a = 1/32 means K is (nearly) singular
+              // or the load is past the end of the branch.
+              if (cut == 5)
+                return false;
+              alpha *= 0.5;
+            }
+          if (!std::isfinite(norm_trial))
+            return false;
+          u.swap(trial);
+          r.swap(r_trial);
+          norm = norm_trial;
+        }
+    }
+
+    void
+    NewtonDriver::run(SystemInterface                               &system,
+                      SystemInterface::Vector                       &u,
+                      const std::function<void(const StepRecord &)> &on_step,
+                      StabilityInterface                            *stability)
+    {
+      result                       = NewtonOutcome();
+      SystemInterface::Vector last = u, previous = u;
+      double                  t = 0., t_previous = 0.;
+      const double            base  = 1. / std::max(1u, settings.load_steps);
+      double                  dt    = base;
+      unsigned int            level = 0, successes = 0, step = 0;
+      const double            t_end = 1. - 1e-12;
+      while (t < t_end)
+        {
+          const double t_new = std::min(1., t + dt);
+          // Predictor: the secant through the last two converged states
+          // (the free DoFs follow the load instead of waiting for Newton).
+          u = last;
+          if (step > 0 && t > t_previous)
+            {
+              u.add((t_new - t) / (t - t_previous), last);
+              u.add(-(t_new - t) / (t - t_previous), previous);
+            }
+          system.apply_dirichlet(u, t_new);
+          StepRecord record;
+          record.step        = step + 1;
+          record.time        = t_new;
+          record.load_factor = t_new;
+          bool        ok     = solve_step(system, u, t_new, record);
+          std::string why    = ok ? "" : "no equilibrium";
+          if (ok && stability != nullptr && settings.stability_check)
+            {
+              const auto start  = clock::now();
+              result.last_check = stability->check_stability();
+              time_spent.solve += seconds_since(start);
+              if (!result.last_check.stable())
+                {
+                  ok = false;
+                  ++result.n_unstable_states;
+                  std::ostringstream s;
+                  s << "the equilibrium is not stable (tangent "
+                    << (result.last_check.singular ?
+                          std::string("singular") :
+                          std::to_string(result.last_check.n_negative) +
+                            " negative eigenvalue(s)")
+                    << ")";
+                  why = s.str();
+                }
+            }
+          if (ok)
+            {
+              ++step;
+              previous                = last;
+              t_previous              = t;
+              t                       = t_new;
+              last                    = u;
+              result.last_stable_load = t;
+              on_step(record);
+              // after two successes in a row, undo one cut
+              if (level > 0 && ++successes == 2)
+                {
+                  --level;
+                  dt        = std::min(base, dt / settings.step_cut_factor);
+                  successes = 0;
+                }
+              continue;
+            }
+          successes = 0;
+          if (level < settings.max_step_cuts)
+            {
+              ++level;
+              ++result.n_cuts;
+              dt *= settings.step_cut_factor;
+              continue;
+            }
+          // The smallest increment failed: unstable crack growth (or no
+          // equilibrium at all).
+          u                   = last;
+          result.failure_load = t_new;
+          std::ostringstream s;
+          s << "unstable at load factor " << t_new << " (" << why << " with "
+            << settings.max_step_cuts
+            << " step cut(s)); last stable load factor " << t;
+          throw RunFailure("unstable", s.str());
+        }
+    }
+    void
+    NewtonDriver::run_arc_length(
+      SystemInterface                                    &system,
+      SystemInterface::Vector                            &u,
+      const SystemInterface::Vector                      &q,
+      const unsigned int                                  max_steps,
+      const std::function<void(const StepRecord &)>      &on_step,
+      StabilityInterface                                 *stability,
+      const std::function<void(const StabilityReport &)> &on_check)
+    {
+      result = NewtonOutcome();
+      SystemInterface::Vector r, dq, dr, w, last = u, increment;
+      system.initialize_vector(r);
+      system.initialize_vector(dq);
+      system.initialize_vector(dr);
+      // ---- first step: load control
+      StepRecord   first;
+      const double t0 = 1. / std::max(1u, settings.load_steps);
+      first.step      = 1;
+      first.time = first.load_factor = t0;
+      if (!solve_step(system, u, t0, first))
+        throw RunFailure("diverged",
+                         "arc length: the first, load-controlled step "
+                         "does not converge");
+      increment = u;
+      increment -= last;
+      double dl = increment.l2_norm(), lambda = t0;
+      last                    = u;
+      result.last_stable_load = lambda;
+      if (stability != nullptr && on_check)
+        on_check(stability->check_stability());
+      on_step(first);
+
+      unsigned int level = 0;
+      for (unsigned int step = 2; step <= max_steps && lambda < 1.;)
+        {
+          // predictor along K^-1 q (K of the last converged state)
+          system.residual(last, lambda, r, true);
+          system.solve_linear(dq, q);
+          double sign = (dq * increment) >= 0. ? 1. : -1.;
+          double dlam = sign * dl / dq.l2_norm();
+          u           = last;
+          u.add(dlam, dq);
+          double     lam = lambda + dlam;
+          StepRecord record;
+          record.step = step;
+          bool   ok   = false;
+          double ref  = 0.;
+          for (unsigned int it = 0; it <= settings.max_iterations; ++it)
+            {
+              const double norm = system.residual(u, lam, r, true);
+              if (!std::isfinite(norm))
+                break;
+              const double scale = std::max(system.force_scale(), ref);
+              if (it == 0)
+                ref = std::max(norm, system.force_scale());
+              record.relative_residual = scale > 0. ? norm / scale : norm;
+              if (norm <= settings.residual_tolerance * scale)
+                {
+                  ok = true;
+                  break;
+                }
+              if (it == settings.max_iterations)
+                break;
+              system.solve_linear(dr, r);
+              system.solve_linear(dq, q);
+              // |Delta u + dr + dlam dq| = dl, Delta u = u - last
+              w = u;
+              w -= last;
+              w += dr;
+              const double a = dq * dq, b = 2. * (dq * w), c = w * w - dl * dl;
+              const double disc = b * b - 4. * a * c;
+              if (!(disc >= 0.) || !(a > 0.))
+                break;
+              const double x1 = (-b + std::sqrt(disc)) / (2. * a);
+              const double x2 = (-b - std::sqrt(disc)) / (2. * a);
+              // the root that keeps the increment closest to the last one
+              w.add(x1, dq);
+              const double c1 = w * increment;
+              w.add(x2 - x1, dq);
+              const double c2 = w * increment;
+              const double d  = c1 >= c2 ? x1 : x2;
+              u += dr;
+              u.add(d, dq);
+              lam += d;
+              ++record.newton_iterations;
+              record.linear_iterations += 2;
+            }
+          if (!ok)
+            {
+              if (level == settings.max_step_cuts)
+                {
+                  u                   = last;
+                  result.failure_load = lam;
+                  throw RunFailure("diverged",
+                                   "arc length: no convergence with the "
+                                   "smallest arc length");
+                }
+              ++level;
+              ++result.n_cuts;
+              dl *= 0.5;
+              continue;
+            }
+          level     = 0;
+          increment = u;
+          increment -= last;
+          last        = u;
+          lambda      = lam;
+          record.time = record.load_factor = lambda;
+          if (stability != nullptr)
+            {
+              result.last_check = stability->check_stability();
+              if (result.last_check.stable())
+                result.last_stable_load =
+                  std::max(result.last_stable_load, lambda);
+              else
+                ++result.n_unstable_states;
+              if (on_check)
+                on_check(result.last_check);
+            }
+          on_step(record);
+          ++step;
+        }
+    }
+  } // namespace Drivers
+} // namespace pdfem
