@@ -34,6 +34,9 @@ namespace pdfem
   {
     using dealii::types::global_dof_index;
 
+    /// State of the dynamic methods (coupled_system_dynamics.cc).
+    struct DynamicData;
+
     template <int dim>
     struct CoupledSystem<dim>::Impl
     {
@@ -195,6 +198,9 @@ namespace pdfem
       double                                        force_scale = 0.;
       std::vector<dealii::Tensor<1, dim>>           last_reactions;
       std::size_t                                   n_matrix_entries = 0;
+      /// Mass, effective-matrix factorisation (shared_ptr: the type is
+      /// complete only in coupled_system_dynamics.cc).
+      std::shared_ptr<DynamicData> dynamics;
     };
   } // namespace Coupling
 } // namespace pdfem

@@ -125,18 +125,63 @@ namespace pdfem
       parse(dealii::ParameterHandler &prm, const std::string &file);
     };
 
-    /** `subsection Driver`. */
+    /** A node whose displacement history.csv records every step. */
+    struct MonitorPoint
+    {
+      std::string           name;
+      std::array<double, 3> point = {{0., 0., 0.}};
+    };
+
+    /**
+     * `subsection Driver`: static equilibrium, or a dynamic run (explicit
+     * central difference or Newmark) in physical time t.
+     */
     struct Driver
     {
-      std::string  type               = "static";
+      std::string  type               = "static"; // static|explicit|newmark
       unsigned int load_steps         = 1;
       double       residual_tolerance = 1e-9; // relative to |f_ext| (or |r_0|)
       unsigned int max_iterations     = 10;
 
+      /// @name Dynamic runs (Type = explicit or newmark)
+      /// @{
+      /// Time step [s]; 0 = automatic (explicit only): safety factor times
+      /// the critical step 2 / omega_max.
+      double time_step = 0.;
+      /// End time [s] (> 0 for a dynamic run).
+      double end_time = 0.;
+      /// Explicit: the automatic step is this times 2 / omega_max.
+      double safety_factor = 0.9;
+      /// Power iterations for the largest eigenvalue of M^-1 K.
+      unsigned int eigenvalue_iterations = 50;
+      /// Newmark parameters (average acceleration by default).
+      double newmark_beta  = 0.25;
+      double newmark_gamma = 0.5;
+      /// lumped | consistent (consistent: Newmark only).
+      std::string mass = "lumped";
+      /// Newmark: reuse the factorisation of K_N while no bond breaks.
+      bool reuse_factorization = true;
+      /// Initial velocity: dim expressions of x, y, z (empty: at rest).
+      std::vector<std::string> initial_velocity;
+      /// The run stops ('time step too large') when the energy exceeds the
+      /// energy supplied by more than this fraction of the peak supplied.
+      double energy_tolerance = 0.5;
+      /// Write a history row every this many steps (and the last one).
+      unsigned int history_interval = 1;
+      /// Nodes whose displacement is written to history.csv.
+      std::vector<MonitorPoint> monitor_points;
+      /// @}
+
+      bool
+      dynamic() const
+      {
+        return type == "explicit" || type == "newmark";
+      }
+
       static void
       declare(dealii::ParameterHandler &prm);
       void
-      parse(dealii::ParameterHandler &prm, const std::string &file);
+      parse(dealii::ParameterHandler &prm, const std::string &file, int dim);
     };
 
     /** `subsection Output`. */
