@@ -14,6 +14,8 @@
 #include <deal.II/lac/trilinos_solver.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <regex>
 
 #include "coupled_system_impl.h"
@@ -348,6 +350,32 @@ namespace pdfem
     }
 
     template <int dim>
+    void
+    CoupledSystem<dim>::pseudo_random(Vector &v) const
+    {
+      // splitmix64 of the coordinates' bit patterns and the component.
+      const Impl &s = *impl;
+      v.reinit(s.owned, s.comm);
+      for (const unsigned int k : s.owned_nodes)
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            std::uint64_t h = 0x9E3779B97F4A7C15ull * (c + 1);
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                std::uint64_t bits = 0;
+                const double  xd   = s.x[k][d];
+                std::memcpy(&bits, &xd, sizeof bits);
+                h ^= bits + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+                h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
+                h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
+                h ^= h >> 31;
+              }
+            v[s.node_dof[k][c]] = double(h % 2000001) / 1e6 - 1.;
+          }
+      v.compress(VectorOperation::insert);
+    }
+
+    template <int dim>
     unsigned int
     CoupledSystem<dim>::n_effective_factorizations() const
     {
@@ -423,6 +451,7 @@ namespace pdfem
                                                             const Vector &);     \
   template void   CoupledSystem<dim>::mass_vmult(Vector &, const Vector &);      \
   template double CoupledSystem<dim>::thickness() const;                         \
+  template void   CoupledSystem<dim>::pseudo_random(Vector &) const;             \
   template unsigned int CoupledSystem<dim>::n_effective_factorizations()         \
     const;                                                                       \
   template void CoupledSystem<dim>::interpolate(                                 \

@@ -165,8 +165,7 @@ namespace pdfem
             }
           energy.record(record);
           ++time_spent.n_steps;
-          const double error = energy.error();
-          if (!std::isfinite(error) || error > settings.energy_tolerance)
+          if (energy.unstable(settings.energy_tolerance))
             {
               time_spent.steps = seconds_since(loop_start);
               on_step(record);

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iomanip>
 #include <sstream>
 
 #include "dynamics_internal.h"
@@ -33,18 +34,14 @@ namespace pdfem
       const double  *mv   = m.begin();
       const MPI_Comm comm = x.get_mpi_communicator();
 
-      // Start vector: a hash of the global index in [-1, 1] (rank-count
-      // independent), which contains the highest modes.
-      const auto owned = x.locally_owned_elements();
-      double    *xv    = x.begin();
+      // Start vector: pseudo-random from node to node (contains the
+      // highest modes), a function of the node positions only, so the
+      // estimate does not depend on the number of ranks.
+      system.pseudo_random(x);
+      double *xv = x.begin();
       for (std::size_t i = 0; i < n; ++i)
-        {
-          std::uint64_t h = owned.nth_index_in_set(i) + 0x9E3779B97F4A7C15ull;
-          h               = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
-          h               = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
-          h ^= h >> 31;
-          xv[i] = held[i] ? 0. : double(h % 2000001) / 1e6 - 1.;
-        }
+        if (held[i])
+          xv[i] = 0.;
 
       StabilityEstimate e;
       double            previous = 0.;
@@ -128,7 +125,9 @@ namespace pdfem
         work       = 0.;
         dissipated = 0.;
         peak       = std::abs(e0);
+        peak_total = std::abs(e0);
         totals.assign(1, kinetic + strain);
+        errors.clear();
       }
 
       void
@@ -161,9 +160,14 @@ namespace pdfem
         strain  = 0.5 * global[1];
         kinetic = kinetic_energy;
         peak    = std::max(peak, std::abs(e0 + work));
+        peak_total =
+          std::max(peak_total, std::abs(kinetic + strain + dissipated));
         totals.push_back(kinetic + strain + dissipated);
         if (totals.size() > 11)
           totals.pop_front();
+        errors.push_back(error());
+        if (errors.size() > 4)
+          errors.pop_front();
       }
 
       void
@@ -172,6 +176,8 @@ namespace pdfem
         const double after = 0.5 * (u * f_int);
         dissipated += strain - after;
         strain = after;
+        if (!errors.empty())
+          errors.back() = error();
       }
 
       void
@@ -187,10 +193,25 @@ namespace pdfem
       double
       EnergyAccount::error() const
       {
+        // Relative to the largest energy seen, supplied or present: at
+        // most 1 in size when nothing was supplied yet.
         const double imbalance = kinetic + strain + dissipated - work - e0;
-        if (peak > 0.)
-          return imbalance / peak;
-        return imbalance == 0. ? 0. : std::copysign(HUGE_VAL, imbalance);
+        const double scale     = std::max(peak, peak_total);
+        return scale > 0. ? imbalance / scale : 0.;
+      }
+
+      bool
+      EnergyAccount::unstable(const double tolerance) const
+      {
+        const double e = error();
+        if (!std::isfinite(e))
+          return true;
+        if (!(e > tolerance) || errors.size() < 4)
+          return false;
+        for (std::size_t i = 1; i < errors.size(); ++i)
+          if (!(errors[i] > errors[i - 1]))
+            return false;
+        return true;
       }
 
       double
@@ -223,7 +244,8 @@ namespace pdfem
           << energy.error() << " of it) at step " << step << ", t = " << t
           << " s, with dt = " << dt << " s";
         if (g > 1.)
-          s << "; it grows by a factor " << g << " per step";
+          s << "; it grows by a factor " << std::setprecision(6) << g
+            << std::setprecision(3) << " per step";
 
         const bool step_too_large =
           explicit_scheme &&

@@ -74,6 +74,13 @@ namespace pdfem
         double
         error() const;
 
+        /// Whether the error exceeds @p tolerance and grew in each of the
+        /// last three steps: an instability, not the start-up mismatch of
+        /// a load that has supplied almost nothing yet (at step 1 of a
+        /// ramp the work is 0 but v^1 = dt/2 a^1 is not).
+        bool
+        unstable(double tolerance) const;
+
         /// Total energy (kinetic + strain + dissipated) history for the
         /// growth rate: energy ratio per step over the last steps.
         double
@@ -84,7 +91,8 @@ namespace pdfem
         Vector             u_old, force_old;
         double             e0 = 0., work = 0., dissipated = 0.;
         double             kinetic = 0., strain = 0., peak = 0.;
-        std::deque<double> totals;
+        double             peak_total = 0.;
+        std::deque<double> totals, errors;
         void
         applied_force(const Vector            &f_int,
                       const Vector            &f_ext,

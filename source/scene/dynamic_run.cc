@@ -274,8 +274,12 @@ namespace pdfem
                               dyn_timings.factorize;
         timings["solve"] = dyn_timings.solve + dyn_timings.update;
 
-        // ---- results
-        start                                     = clock::now();
+        // ---- results (reactions at the last state)
+        start = clock::now();
+        if (!reaction_sets.empty())
+          system.residual(u, last.time, r, false);
+        const auto          final_reactions = system.reactions();
+        const unsigned long n_broken_bonds  = system.size().n_broken_bonds;
         const Coupling::NodalResults<dim> results = system.nodal_results(u);
         IO::FieldOutput<dim>              field_output(setup.out_dir,
                                           dim == 2 &&
@@ -313,7 +317,7 @@ namespace pdfem
             json.value("pd_cells", size.n_pd_cells);
             json.value("dofs", size.n_dofs);
             json.value("bonds", size.n_bonds);
-            json.value("broken_bonds", system.size().n_broken_bonds);
+            json.value("broken_bonds", n_broken_bonds);
             json.value("decoupled_nodes", size.n_decoupled_nodes);
             json.value("pd_boundary_faces", size.n_pd_boundary_faces);
             json.value("matrix_entries_rank0", size.n_matrix_entries);
@@ -361,6 +365,25 @@ namespace pdfem
               json.value(scomps[c], smin[c]);
             json.end_object();
             json.value("max_damage", dmax);
+            json.begin_object("reaction");
+            for (std::size_t set = 0; set < reaction_sets.size(); ++set)
+              {
+                json.begin_object(reaction_sets[set]);
+                for (unsigned int c = 0; c < dim; ++c)
+                  json.value(comps[c], final_reactions[set][c]);
+                json.end_object();
+              }
+            json.end_object();
+            if (!setup.reaction_group.empty())
+              {
+                Tensor<1, dim> R;
+                for (const unsigned int g : setup.reaction_group)
+                  R += final_reactions[g];
+                json.begin_object("reaction_RF");
+                for (unsigned int c = 0; c < dim; ++c)
+                  json.value(comps[c], R[c]);
+                json.end_object();
+              }
             json.end_object();
 
             // The dynamic run: step, stability, energy balance, cost.

@@ -96,17 +96,65 @@ namespace pdfem
                            "is not supported yet (crack growth comes with the "
                            "quasi-static driver)",
                            "SOLVER STATIC");
-        if (model.solver == Solver::dynamic)
-          throw InputError(cmd,
-                           "SOLVER DYNAMIC",
-                           "is not supported yet (the explicit and Newmark "
-                           "drivers come later)",
-                           "SOLVER STATIC");
-        if (model.failure_criterion == 1)
+        const bool dynamic = model.solver == Solver::dynamic;
+        if (dynamic)
+          {
+            // SOLVER DYNAMIC: explicit central difference (NEWMARK OFF) or
+            // Newmark (specs/004 §2.3-2.4); SETSOLVING dt N writeFreq.
+            auto &driver = setup.driver;
+            driver.type  = model.newmark ? "newmark" : "explicit";
+            if (!(model.dt > 0.))
+              throw InputError(cmd,
+                               "SETSOLVING",
+                               "the time step dt = " + number(model.dt) +
+                                 " is not positive",
+                               "dt > 0 [s]");
+            if (!(model.density > 0.))
+              throw InputError(model.mesh_file,
+                               "line 4",
+                               "density rho = " + number(model.density) +
+                                 " for SOLVER DYNAMIC",
+                               "rho > 0");
+            driver.time_step     = model.dt;
+            driver.end_time      = model.dt * model.n_steps;
+            driver.newmark_beta  = model.newmark_beta;
+            driver.newmark_gamma = model.newmark_gamma;
+            if (model.newmark)
+              {
+                const double g = model.newmark_gamma, b = model.newmark_beta;
+                const double b_min = (2. * g + 1.) * (2. * g + 1.) / 16.;
+                if (!(g >= 0.5) || !(b >= b_min - 1e-14) || !(b <= 1.))
+                  throw InputError(cmd,
+                                   "NEWMARK ON gamma beta",
+                                   "gamma = " + number(g) +
+                                     ", beta = " + number(b) +
+                                     " are outside the unconditionally "
+                                     "stable range",
+                                   "gamma >= 0.5, (2 gamma + 1)^2 / 16 <= "
+                                   "beta <= 1");
+                // The peer's Newmark: consistent FE mass + PD lumped mass.
+                driver.mass = "consistent";
+              }
+            else
+              {
+                driver.mass = "lumped";
+                if (!model.lumped_mass)
+                  setup.notes.push_back(
+                    cmd + ": LUMPMASS OFF: the explicit driver uses the lumped "
+                          "mass (a consistent one would need a solve per "
+                          "step)");
+              }
+            if (model.failure_criterion != 0)
+              setup.notes.push_back(
+                cmd + ": FC " + std::to_string(model.failure_criterion) +
+                ": dynamic bond breaking is not wired yet; every bond stays "
+                "intact");
+          }
+        if (model.failure_criterion == 1 && !dynamic)
           setup.notes.push_back(
             cmd + ": FC 1: the stress-intensity factors of a static run are "
                   "not computed yet; the run goes on without them");
-        if (model.failure_criterion == 2)
+        if (model.failure_criterion == 2 && !dynamic)
           setup.notes.push_back(
             cmd + ": FC 2: the maximum bond principal stress of a static run "
                   "is not reported yet; max_principal_stress in summary.json "
@@ -221,6 +269,8 @@ namespace pdfem
               static_cast<unsigned int>(first_traction_id + s)};
             bc.component  = dim; // normal: positive = tension, as the peer
             bc.expression = exact(model.natural[s].traction);
+            if (dynamic && model.natural[s].rate != 0.)
+              bc.expression += " + " + exact(model.natural[s].rate) + " * t";
             settings.traction.push_back(bc);
           }
         setup.timings["mesh"] = std::chrono::duration<double>(
@@ -237,6 +287,8 @@ namespace pdfem
             bc.vertices   = set.nodes;
             bc.component  = set.component;
             bc.expression = exact(set.value); // static: VEBC rates unused
+            if (dynamic && set.rate != 0.)    // VEBC: a prescribed velocity
+              bc.expression += " + " + exact(set.rate) + " * t";
             settings.dirichlet.push_back(bc);
           }
         for (const unsigned int s : model.reaction_sets)
@@ -270,6 +322,12 @@ namespace pdfem
         settings.linear_solver.preconditioner = "amg fe";
         settings.linear_solver.tolerance      = 1e-12;
         setup.driver.residual_tolerance       = 1e-11;
+        if (setup.driver.type == "newmark")
+          {
+            // K_N is factorised once and reused: a direct solver.
+            settings.linear_solver.type          = "direct";
+            settings.linear_solver.direct_solver = "mumps";
+          }
       }
 
 #define INSTANTIATE(dim)                                             \

@@ -227,6 +227,8 @@ namespace pdfem
       mass_vmult(Vector &y, const Vector &x) override;
       double
       thickness() const override;
+      void
+      pseudo_random(Vector &x) const override;
       /// Number of factorisations (or preconditioner set-ups) of K_N so far.
       unsigned int
       n_effective_factorizations() const;

@@ -70,6 +70,12 @@ namespace pdfem
       virtual void
       mass_vmult(Vector &y, const Vector &x) = 0;
 
+      /// @p x = values in [-1, 1] that look random from node to node but
+      /// depend only on the node positions and components, so the same on
+      /// any number of ranks (start vector of the power iteration).
+      virtual void
+      pseudo_random(Vector &x) const = 0;
+
       /// The width of a 2D body (forces and energies are per unit thickness;
       /// reports multiply by it); 1 in 3D.
       virtual double
