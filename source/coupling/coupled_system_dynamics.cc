@@ -351,6 +351,27 @@ namespace pdfem
 
     template <int dim>
     void
+    CoupledSystem<dim>::update_reactions()
+    {
+      // As residual(): f_int - f_ext summed over each set's owned nodes, for
+      // the 2D thickness. f_int and f_ext hold the last evaluations.
+      Impl                                &s = *impl;
+      DynamicData                         &d = data(s.dynamics);
+      const TrilinosWrappers::MPI::Vector &f_ext =
+        d.f_ext_ready ? d.f_ext : s.f_ext;
+      for (std::size_t set = 0; set < s.set_names.size(); ++set)
+        {
+          Tensor<1, dim> R;
+          for (const unsigned int k : s.set_nodes[set])
+            if (s.owned.is_element(s.node_dof[k][0]))
+              for (unsigned int c = 0; c < dim; ++c)
+                R[c] += s.f_int[s.node_dof[k][c]] - f_ext[s.node_dof[k][c]];
+          s.last_reactions[set] = thickness() * Utilities::MPI::sum(R, s.comm);
+        }
+    }
+
+    template <int dim>
+    void
     CoupledSystem<dim>::pseudo_random(Vector &v) const
     {
       // splitmix64 of the coordinates' bit patterns and the component.
@@ -452,6 +473,7 @@ namespace pdfem
   template void   CoupledSystem<dim>::mass_vmult(Vector &, const Vector &);      \
   template double CoupledSystem<dim>::thickness() const;                         \
   template void   CoupledSystem<dim>::pseudo_random(Vector &) const;             \
+  template void   CoupledSystem<dim>::update_reactions();                        \
   template unsigned int CoupledSystem<dim>::n_effective_factorizations()         \
     const;                                                                       \
   template void CoupledSystem<dim>::interpolate(                                 \

@@ -174,9 +174,10 @@ namespace pdfem
               std::isfinite(record.energy_error))
             return;
           ++n_written;
-          // Reactions of the supports (f_int - f_ext over each set).
+          // Reactions of the supports (f_int - f_ext over each set) from
+          // the forces the integrator evaluated last (at this u and t).
           if (!reaction_sets.empty())
-            system.residual(u, record.time, r, false);
+            system.update_reactions();
           const Coupling::ProblemSize s         = system.size();
           std::vector<double>         row       = {double(record.step),
                                                    record.time,

@@ -66,9 +66,16 @@ namespace pdfem
         setup.name      = std::filesystem::path(cmd).stem().string();
         setup.driver    = Parameters::Driver();
 
-        // ---- command-line overrides: only the output ones make sense here
+        // ---- command-line overrides: the output ones, and for SOLVER
+        // DYNAMIC a few driver ones (benchmarks: step sweeps, reuse).
+        std::vector<std::pair<std::string, std::string>> driver_overrides;
         for (const auto &[path, value] : options.overrides)
           {
+            if (path.rfind("Driver/", 0) == 0)
+              {
+                driver_overrides.emplace_back(path, value);
+                continue;
+              }
             const bool on = value == "true";
             if (!on && value != "false")
               throw InputError("--set",
@@ -86,7 +93,11 @@ namespace pdfem
                                path,
                                "cannot be set for a PDLSM-FEM command file",
                                "Output/Write vtu, Output/Write nodes csv, "
-                               "Output/Print timings");
+                               "Output/Print timings; with SOLVER DYNAMIC "
+                               "also Driver/Time step, Driver/Time step "
+                               "safety factor, Driver/End time, "
+                               "Driver/Reuse factorization, Driver/History "
+                               "interval");
           }
 
         // ---- what is not there yet: say so before any work
@@ -144,12 +155,60 @@ namespace pdfem
                           "mass (a consistent one would need a solve per "
                           "step)");
               }
+            for (const auto &[path, value] : driver_overrides)
+              {
+                const std::string entry = path.substr(7);
+                try
+                  {
+                    if (entry == "Time step")
+                      driver.time_step =
+                        value == "auto" ? 0. : std::stod(value);
+                    else if (entry == "Time step safety factor")
+                      driver.safety_factor = std::stod(value);
+                    else if (entry == "End time")
+                      driver.end_time = std::stod(value);
+                    else if (entry == "History interval")
+                      driver.history_interval = std::stoul(value);
+                    else if (entry == "Reuse factorization" &&
+                             (value == "true" || value == "false"))
+                      driver.reuse_factorization = value == "true";
+                    else
+                      throw std::invalid_argument(entry);
+                  }
+                catch (const std::exception &)
+                  {
+                    throw InputError("--set",
+                                     path,
+                                     "cannot be set to '" + value +
+                                       "' for a PDLSM-FEM command file",
+                                     "Driver/Time step (> 0 or auto), Time "
+                                     "step safety factor (> 0), End time "
+                                     "(> 0), History interval (>= 1), Reuse "
+                                     "factorization (true|false)");
+                  }
+              }
+            if ((driver.time_step == 0. && model.newmark) ||
+                driver.time_step < 0. || !(driver.safety_factor > 0.) ||
+                !(driver.end_time > 0.) || driver.history_interval == 0)
+              throw InputError("--set",
+                               "Driver",
+                               "an override is out of range",
+                               "Time step > 0 (auto: explicit only), safety "
+                               "factor > 0, End time > 0, History interval "
+                               ">= 1");
             if (model.failure_criterion != 0)
               setup.notes.push_back(
                 cmd + ": FC " + std::to_string(model.failure_criterion) +
                 ": dynamic bond breaking is not wired yet; every bond stays "
                 "intact");
           }
+        if (!dynamic && !driver_overrides.empty())
+          throw InputError("--set",
+                           driver_overrides.front().first,
+                           "cannot be set for a PDLSM-FEM command file with "
+                           "SOLVER STATIC",
+                           "Output/Write vtu, Output/Write nodes csv, "
+                           "Output/Print timings");
         if (model.failure_criterion == 1 && !dynamic)
           setup.notes.push_back(
             cmd + ": FC 1: the stress-intensity factors of a static run are "

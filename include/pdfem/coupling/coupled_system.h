@@ -229,6 +229,10 @@ namespace pdfem
       thickness() const override;
       void
       pseudo_random(Vector &x) const override;
+      /// Reactions (see reactions()) from the last internal_force() and
+      /// external_force() calls, without evaluating them again.
+      void
+      update_reactions();
       /// Number of factorisations (or preconditioner set-ups) of K_N so far.
       unsigned int
       n_effective_factorizations() const;
