@@ -36,12 +36,14 @@ namespace pdfem
       TrilinosWrappers::MPI::Vector f_ext;
       /// The consistent mass with held rows/columns eliminated (lumped
       /// value on their diagonal), once a consistent K_N was asked for.
-      bool                                                consistent = false;
-      TrilinosWrappers::SparseMatrix                      mass;
-      SolverControl                                       direct_control{1, 0};
+      bool                           consistent = false;
+      TrilinosWrappers::SparseMatrix mass;
+      SolverControl                  direct_control{1, 0};
+      /// K_N; declared before the solvers that point to it, so that it is
+      /// destroyed after them (Amesos_Mumps::Destroy reads the matrix).
+      std::unique_ptr<TrilinosWrappers::SparseMatrix>     effective;
       std::unique_ptr<TrilinosWrappers::SolverDirect>     direct;
       std::unique_ptr<TrilinosWrappers::PreconditionBase> precondition;
-      std::unique_ptr<TrilinosWrappers::SparseMatrix>     effective;
       unsigned int                                        n_factorizations = 0;
     };
 
@@ -244,6 +246,9 @@ namespace pdfem
       // K_N = c_k K + c_m M: the tangent (held rows and columns eliminated,
       // E h^(dim-2) on their diagonal), scaled, plus the mass.
       s.assemble_tangent();
+      // The old factorisation refers to K_N: release it before K_N changes.
+      d.direct.reset();
+      d.precondition.reset();
       if (!d.effective)
         d.effective = std::make_unique<TrilinosWrappers::SparseMatrix>();
       TrilinosWrappers::SparseMatrix &A = *d.effective;

@@ -206,10 +206,15 @@ namespace pdfem
         const double e = error();
         if (!std::isfinite(e))
           return true;
-        if (!(e > tolerance) || errors.size() < 4)
+        if (!(e > tolerance) || errors.size() < 4 || totals.size() < 4)
           return false;
+        // The energy grew in each of the last three steps and the error did
+        // not shrink (it saturates near 1 once the growth dominates).
         for (std::size_t i = 1; i < errors.size(); ++i)
-          if (!(errors[i] > errors[i - 1]))
+          if (!(errors[i] >= errors[i - 1] - 1e-12))
+            return false;
+        for (std::size_t i = totals.size() - 3; i < totals.size(); ++i)
+          if (!(totals[i] > totals[i - 1]))
             return false;
         return true;
       }

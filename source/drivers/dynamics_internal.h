@@ -74,10 +74,11 @@ namespace pdfem
         double
         error() const;
 
-        /// Whether the error exceeds @p tolerance and grew in each of the
-        /// last three steps: an instability, not the start-up mismatch of
-        /// a load that has supplied almost nothing yet (at step 1 of a
-        /// ramp the work is 0 but v^1 = dt/2 a^1 is not).
+        /// Whether the error exceeds @p tolerance, did not decrease and the
+        /// energy grew in each of the last three steps: an instability, not
+        /// the start-up mismatch of a load that has supplied almost nothing
+        /// yet (at step 1 of a ramp the work is 0 but v^1 = dt/2 a^1 is
+        /// not, and the error then shrinks).
         bool
         unstable(double tolerance) const;
 
