@@ -169,6 +169,28 @@ namespace pdfem
                   zero_held(A);
                   system.internal_force(U, F_int);
                   energy.bonds_broke(U, F_int);
+                  // a^n+1 for the new bonds (M a = f_ext - f_int(u)), so
+                  // that the next step starts in balance; K_N is
+                  // refactorised at the next step.
+                  R = F_ext;
+                  R -= F_int;
+                  zero_held(R);
+                  if (consistent)
+                    {
+                      const auto t0 = clock::now();
+                      system.factorize_effective(1., 0., true);
+                      ++factorizations;
+                      system.solve_effective(A, R);
+                      time_spent.factorize += seconds_since(t0);
+                    }
+                  else
+                    {
+                      const double *m = M.begin();
+                      const double *r = R.begin();
+                      double       *a = A.begin();
+                      for (std::size_t i = 0; i < n; ++i)
+                        a[i] = held[i] ? 0. : r[i] / m[i];
+                    }
                   refactor = true;
                 }
               time_spent.callback += seconds_since(start);

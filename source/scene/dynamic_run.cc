@@ -275,6 +275,10 @@ namespace pdfem
                               dyn_timings.factorize;
         timings["solve"] = dyn_timings.solve + dyn_timings.update;
 
+        // Total mass (lumped, per component, for the thickness): rho x volume.
+        const double total_mass =
+          thickness * system.lumped_mass().l1_norm() / dim;
+
         // ---- results (reactions at the last state)
         start = clock::now();
         if (!reaction_sets.empty())
@@ -414,6 +418,7 @@ namespace pdfem
                            static_cast<unsigned long>(factorizations));
               }
             json.value("mass", prm.mass);
+            json.value("total_mass", total_mass);
             json.value("kinetic_energy", thickness * last.kinetic_energy);
             json.value("strain_energy", thickness * last.strain_energy);
             json.value("external_work", thickness * last.external_work);
