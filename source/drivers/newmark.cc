@@ -25,17 +25,22 @@ namespace pdfem
                  const OnStep           &on_step,
                  const AfterStep        &after_step)
     {
-      const double       dt         = settings.time_step;
-      const double       beta       = settings.newmark_beta;
-      const double       gamma      = settings.newmark_gamma;
-      const bool         consistent = settings.mass == "consistent";
+      const double dt = settings.time_step;
+      // HHT-alpha (Hilber, Hughes & Taylor 1977): alpha in [-1/3, 0] damps
+      // high frequencies; beta and gamma follow from it.
+      const double alpha = settings.hht_alpha;
+      const double beta =
+        alpha != 0. ? (1. - alpha) * (1. - alpha) / 4. : settings.newmark_beta;
+      const double gamma = alpha != 0. ? 0.5 - alpha : settings.newmark_gamma;
+      const bool   consistent = settings.mass == "consistent";
       const unsigned int n_steps =
         static_cast<unsigned int>(std::ceil(settings.end_time / dt - 1e-9));
       const MPI_Comm comm = U.get_mpi_communicator();
 
       const Vector &M = system.lumped_mass();
-      Vector        V, A, A_new, F_int, F_ext, R, MV;
-      for (Vector *w : {&V, &A, &A_new, &F_int, &F_ext, &R, &MV})
+      // R_old = f_ext - f_int at the last step (HHT's alpha-weighted part).
+      Vector V, A, A_new, F_int, F_ext, R, R_old, MV;
+      for (Vector *w : {&V, &A, &A_new, &F_int, &F_ext, &R, &R_old, &MV})
         system.initialize_vector(*w);
       std::vector<char> held = held_flags(system, U);
       const std::size_t n    = held.size();
@@ -53,7 +58,9 @@ namespace pdfem
       };
       auto factorize = [&]() {
         const auto start = clock::now();
-        system.factorize_effective(1., beta * dt * dt, consistent);
+        system.factorize_effective(1.,
+                                   (1. + alpha) * beta * dt * dt,
+                                   consistent);
         ++factorizations;
         time_spent.factorize += seconds_since(start);
       };
@@ -67,6 +74,7 @@ namespace pdfem
       R = F_ext;
       R -= F_int;
       zero_held(R);
+      R_old = R;
       if (consistent)
         {
           auto start = clock::now();
@@ -122,9 +130,15 @@ namespace pdfem
           start = clock::now();
           system.external_force(t, F_ext);
           time_spent.external_force += seconds_since(start);
+          // (1 + alpha)(f_ext^n+1 - f_int(u~)) - alpha (f_ext^n - f_int(u^n))
           R = F_ext;
           R -= F_int;
           zero_held(R);
+          if (alpha != 0.)
+            {
+              R *= 1. + alpha;
+              R.add(-alpha, R_old);
+            }
 
           start                    = clock::now();
           record                   = DynamicRecord();
@@ -152,6 +166,12 @@ namespace pdfem
           time_spent.internal_force += seconds_since(start);
           start = clock::now();
           energy.step(U, F_int, F_ext, held, kinetic());
+          if (alpha != 0.)
+            {
+              R_old = F_ext;
+              R_old -= F_int;
+              zero_held(R_old);
+            }
           time_spent.update += seconds_since(start);
 
           record.step             = step;
@@ -175,6 +195,7 @@ namespace pdfem
                   R = F_ext;
                   R -= F_int;
                   zero_held(R);
+                  R_old = R;
                   if (consistent)
                     {
                       const auto t0 = clock::now();

