@@ -207,10 +207,11 @@ namespace pdfem
       const Vector &m = lumped_mass();
 
       // Consistent mass (once): FE cells with held DoFs eliminated, PD
-      // nodes and held DoFs on the diagonal. Same pattern as the tangent.
+      // nodes and held DoFs on the diagonal. The pattern of the FE-cell
+      // matrix (every owned row has its diagonal), a subset of the tangent's.
       if (consistent_mass && !d.consistent)
         {
-          d.mass.reinit(s.matrix);
+          d.mass.reinit(s.fe_matrix); // FE cells + diagonal: M's pattern
           d.mass                            = 0.;
           const double                  rho = s.settings.material.density;
           hp::FEValues<dim>             fe_values(s.mapping,

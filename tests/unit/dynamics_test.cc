@@ -298,3 +298,31 @@ TEST(Dynamics, CentralDifferenceBooksBrokenBondsAsDissipated)
   for (const auto &r : c.records)
     EXPECT_LT(std::abs(r.energy_error), 2e-2);
 }
+
+TEST(Dynamics, GrowthBelowTheLimitIsReportedAsUnstableNotAsTheStep)
+{
+  // Negative springs: every mode of M a + K u = 0 grows like exp(|omega| t)
+  // whatever the step; successive velocities are in phase. The run must
+  // stop with "unstable" (a smaller dt would not help), not with "time step
+  // too large".
+  Chain  chain(10, -1e4, 1.);
+  Vector u, v0;
+  chain.initialize_vector(u);
+  chain.initialize_vector(v0);
+  v0[9]           = 1e-3;
+  auto d          = driver("explicit", 10.);
+  d.safety_factor = 0.1;
+  pdfem::Drivers::CentralDifference cd(d);
+  Collect                           c;
+  try
+    {
+      cd.run(chain, u, v0, std::ref(c));
+      ADD_FAILURE() << "the growth was not detected";
+    }
+  catch (const pdfem::RunFailure &e)
+    {
+      EXPECT_EQ(e.exit_state, "unstable");
+      EXPECT_NE(std::string(e.what()).find("does not remove it"),
+                std::string::npos);
+    }
+}
