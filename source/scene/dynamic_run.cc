@@ -199,12 +199,12 @@ namespace pdfem
               for (unsigned int c = 0; c < dim; ++c)
                 row.push_back(R[c]);
             }
+          row.push_back(record.time_step);
           for (const double e : {record.kinetic_energy,
                                  record.strain_energy,
                                  record.external_work,
                                  record.dissipated_energy})
             row.push_back(thickness * e);
-          row.insert(row.end() - 4, record.time_step);
           row.push_back(record.energy_error);
           for (const unsigned int k : monitor_nodes)
             {

@@ -7,7 +7,8 @@
 #     refactorised every step (as the peer does);
 #   - the stability chart: dt/dt_crit from 0.5 to 1.5 with the central difference on the FE bar
 #     of tests/scenes/dynamics_wave_bar_1d.prm and on plateCrack, and Newmark at 0.5-50 dt_crit
-#     on the bar: exit state, steps done, largest energy error, wave-speed error.
+#     on the bar (exit state, steps done, largest energy error, wave-speed error) and at 0.24-20
+#     dt_crit on plateCrack (energy error).
 # Writes doc/benchmarks/dynamics_cost.csv, dynamics_stability.csv, dynamics_newmark.csv and, when
 # pdfem-plot is built, PNG charts beside them. Tests never time anything; this script does.
 #
@@ -140,6 +141,19 @@ for r in 0.5 1 2 5 10 20 50; do
     "$(awk -v c="$speed" 'BEGIN { printf "%.3e", (c - 5000) / 5000 }')" | tee -a "$nm"
 done
 
+# ---- Newmark at large steps on plateCrack (the peer's Newmark input): energy and cost
+if [ -f "$work/platCrack_NewMarkON_FC2.in" ]; then
+  crit=$(v "$work/pc-0.9" dynamics.critical_time_step)
+  for r in 0.24 1 5 20; do
+    dt=$(awk -v c="$crit" -v r="$r" 'BEGIN { printf "%.6e", c * r }')
+    d="$work/pc-nm-$r"
+    "$pdfem" "$work/platCrack_NewMarkON_FC2.in" --output "$d" --quiet --set "Output/Write vtu=false" \
+      --set "Driver/Time step=$dt" 2> /dev/null || true
+    printf '%s,%s,%s,%s,%s,%s,%s,%s\n' plateCrack "$r" "$dt" "$(v "$d" steps)" "$(v "$d" exit_state)" \
+      "$(v "$d" dynamics.max_abs_energy_error)" "" "" | tee -a "$nm"
+  done
+fi
+
 # ---- charts
 if [ -x "$plot" ] && command -v xvfb-run > /dev/null; then
   grep -E "^case|^bar," "$stab" > "$work/stab-bar.csv"
@@ -155,7 +169,7 @@ if [ -x "$plot" ] && command -v xvfb-run > /dev/null; then
       --title "Central difference: energy error against the time step" --out "$out/dynamics_stability.png"
   fi
   awk -F, 'NR == 1 { print "dt_over_dt_crit,abs_wave_speed_error_percent,max_abs_energy_error" }
-           NR > 1 { e = $8 < 0 ? -$8 : $8; print $2 "," 100 * e "," $6 }' "$nm" > "$work/nm.csv"
+           NR > 1 && $1 == "bar" { e = $8 < 0 ? -$8 : $8; print $2 "," 100 * e "," $6 }' "$nm" > "$work/nm.csv"
   xvfb-run -a "$plot" chart "$work/nm.csv" --x dt_over_dt_crit --y abs_wave_speed_error_percent --logx --points \
     --xlabel "dt / dt_crit (explicit limit)" --ylabel "|wave speed error| [%]" \
     --title "Newmark (average acceleration) on the bar: accuracy at large steps" \
