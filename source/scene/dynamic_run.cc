@@ -460,7 +460,8 @@ namespace pdfem
         if (progress)
           {
             if (prm.type == "explicit")
-              *progress << "  dt_crit = " << stability.critical_time_step
+              *progress << std::setprecision(6)
+                        << "  dt_crit = " << stability.critical_time_step
                         << " s (omega_max = " << stability.omega_max
                         << " 1/s), dt = " << dt_used << " s = "
                         << (stability.critical_time_step > 0. ?
