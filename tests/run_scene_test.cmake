@@ -3,7 +3,9 @@
 # Directives read from the scene's comments:
 #   # CHECK: <json key> = <value> rel|abs <tol>   a value in summary.json
 #   # CHECK: <json key> > <value>                  (or <) a bound on a value in summary.json
-#   # NONDECREASING: <history.csv column>         the column never decreases
+#   # CHECK-HISTORY: <command> <args>             pdfem_check <command> history.csv <args>
+#                                                  (column ..., wave-speed ..., nondecreasing COLUMN;
+#                                                  see pdfem_check.cc)
 #   # EXIT-STATE: <state>                          expected exit_state (default completed)
 #   # EXPECT-ERROR: <text>                         bad input: exit status 2 and one line
 #                                                  "pdfem: error: ..." containing <text>
@@ -15,20 +17,23 @@ set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
 set(ENV{OMPI_ALLOW_RUN_AS_ROOT_CONFIRM} 1)
 set(ENV{OMPI_MCA_rmaps_base_oversubscribe} 1)
 
-file(STRINGS "${PRM}" directives REGEX "^# (CHECK|NONDECREASING|EXIT-STATE|EXPECT-ERROR|MPI|REQUIRES):")
+file(STRINGS "${PRM}" directives REGEX "^# (CHECK|CHECK-HISTORY|EXIT-STATE|EXPECT-ERROR|MPI|REQUIRES):")
 get_filename_component(scene_dir "${PRM}" DIRECTORY)
 set(checks "")
-set(monotone "")
+set(history_checks "")
 set(exit_state "completed")
 set(expect_error "")
 set(n_ranks 0)
 foreach(line IN LISTS directives)
-  if(line MATCHES "^# CHECK: *([^ ]+) *= *([^ ]+) +(rel|abs) +([^ ]+)")
+  if(line MATCHES "^# CHECK-HISTORY: *([^ ]+) +(.+)$")
+    set(command "${CMAKE_MATCH_1}")
+    string(STRIP "${CMAKE_MATCH_2}" args)
+    string(REGEX REPLACE " +" "|" args "${args}")
+    list(APPEND history_checks "${command}|${args}")
+  elseif(line MATCHES "^# CHECK: *([^ ]+) *= *([^ ]+) +(rel|abs) +([^ ]+)")
     list(APPEND checks "${CMAKE_MATCH_1}|${CMAKE_MATCH_2}|${CMAKE_MATCH_3}|${CMAKE_MATCH_4}")
   elseif(line MATCHES "^# CHECK: *([^ ]+) *([<>]) *([^ ]+) *$")
     list(APPEND checks "${CMAKE_MATCH_1}|${CMAKE_MATCH_3}|${CMAKE_MATCH_2}|")
-  elseif(line MATCHES "^# NONDECREASING: *([^ ]+)")
-    list(APPEND monotone "${CMAKE_MATCH_1}")
   elseif(line MATCHES "^# EXIT-STATE: *(.+)$")
     string(STRIP "${CMAKE_MATCH_1}" exit_state)
   elseif(line MATCHES "^# EXPECT-ERROR: *(.+)$")
@@ -97,8 +102,10 @@ function(run_and_check tag launcher)
       set(failed 1)
     endif()
   endforeach()
-  foreach(column IN LISTS monotone)
-    execute_process(COMMAND "${CHECKER}" nondecreasing "${WORK}/${tag}/history.csv" ${column}
+  foreach(check IN LISTS history_checks)
+    string(REPLACE "|" ";" parts "${check}")
+    list(POP_FRONT parts command)
+    execute_process(COMMAND "${CHECKER}" ${command} "${WORK}/${tag}/history.csv" ${parts}
       RESULT_VARIABLE crc)
     if(crc)
       set(failed 1)

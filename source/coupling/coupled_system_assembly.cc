@@ -653,6 +653,10 @@ namespace pdfem
 #define INSTANTIATE(dim)                                                       \
   template void CoupledSystem<dim>::Impl::assemble_fe_matrix();                \
   template void CoupledSystem<dim>::Impl::update_held();                       \
+  template void CoupledSystem<dim>::Impl::compute_internal_force(              \
+    const TrilinosWrappers::MPI::Vector &);                                    \
+  template void CoupledSystem<dim>::Impl::assemble_external(double);           \
+  template void CoupledSystem<dim>::Impl::assemble_tangent();                  \
   template void CoupledSystem<dim>::Impl::add_to_matrix(                       \
     TrilinosWrappers::SparseMatrix &,                                          \
     const std::vector<global_dof_index> &,                                     \

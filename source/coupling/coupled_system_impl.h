@@ -34,6 +34,9 @@ namespace pdfem
   {
     using dealii::types::global_dof_index;
 
+    /// State of the dynamic methods (coupled_system_dynamics.cc).
+    struct DynamicData;
+
     template <int dim>
     struct CoupledSystem<dim>::Impl
     {
@@ -197,6 +200,9 @@ namespace pdfem
       bool tangent_stale = false; // residual() asked, solve_linear builds
       std::vector<dealii::Tensor<1, dim>> last_reactions;
       std::size_t                         n_matrix_entries = 0;
+      /// Mass, effective-matrix factorisation (shared_ptr: the type is
+      /// complete only in coupled_system_dynamics.cc).
+      std::shared_ptr<DynamicData> dynamics;
     };
   } // namespace Coupling
 } // namespace pdfem

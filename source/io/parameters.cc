@@ -509,7 +509,7 @@ namespace pdfem
       prm.declare_entry(
         "Type",
         "static",
-        Selection("static|quasi-static|newton|arc length"),
+        Selection("static|quasi-static|newton|arc length|explicit|newmark"),
         "static: equilibrium under the full load, reached in 'Load steps' "
         "equal increments of the load factor t. quasi-static: crack growth "
         "under a slowly increasing load: after each equilibrium the "
@@ -521,7 +521,12 @@ namespace pdfem
         "rnp); a step that cannot be completed stops the run with exit "
         "state 'unstable'. arc length: the load factor becomes an unknown "
         "(Crisfield's arc-length continuation), so the path is followed "
-        "through limit points; soft loading linear in t only (rnp).");
+        "through limit points; soft loading linear in t only (rnp). "
+        "explicit: central difference with lumped mass in physical time t "
+        "(specs/004 §2.3), automatic stable time step. newmark: implicit "
+        "Newmark (beta, gamma) in physical time t (specs/004 §2.4), the "
+        "factorisation of M + beta dt^2 K reused while no bond breaks. In "
+        "dynamic runs, t in the boundary expressions is physical time.");
       prm.declare_entry("Load steps",
                         "1",
                         Integer(1),
@@ -589,31 +594,225 @@ namespace pdfem
                         "newton: test every converged state for stability "
                         "(reduced tangent positive definite); an unstable "
                         "state is rejected like a diverged step.");
+      prm.declare_entry("Time step",
+                        "auto",
+                        Anything(),
+                        "Dynamic runs: the time step [s], > 0, or 'auto' "
+                        "(explicit only): 'Time step safety factor' times "
+                        "the critical step 2/omega_max, omega_max^2 the "
+                        "largest eigenvalue of M^-1 K by power iteration.");
+      prm.declare_entry("End time",
+                        "0",
+                        Double(),
+                        "Dynamic runs: the end time [s], > 0.");
+      prm.declare_entry("Time step safety factor",
+                        "0.9",
+                        Double(),
+                        "Explicit, automatic step: dt = factor * 2/omega_max, "
+                        "0 < factor; above 1 the run is unstable (a note "
+                        "says so).");
+      prm.declare_entry("Eigenvalue iterations",
+                        "50",
+                        Integer(1),
+                        "Power iterations for omega_max^2, the largest "
+                        "eigenvalue of M^-1 K.");
+      prm.declare_entry("Newmark beta",
+                        "0.25",
+                        Double(),
+                        "Newmark beta: unconditionally stable for "
+                        "beta >= (2 gamma + 1)^2 / 16 (0.25 with gamma = "
+                        "0.5: average acceleration).");
+      prm.declare_entry("Newmark gamma",
+                        "0.5",
+                        Double(),
+                        "Newmark gamma >= 0.5 (0.5: no numerical damping; "
+                        "larger values damp high frequencies).");
+      prm.declare_entry("HHT alpha",
+                        "0",
+                        Double(),
+                        "Newmark: HHT-alpha numerical damping of high "
+                        "frequencies, -1/3 <= alpha <= 0 (0: none). If not 0, "
+                        "beta = (1 - alpha)^2 / 4 and gamma = 1/2 - alpha "
+                        "replace 'Newmark beta' and 'Newmark gamma'.");
+      prm.declare_entry("Mass",
+                        "lumped",
+                        Selection("lumped|consistent"),
+                        "lumped: FE row-sum lumping over the FE cells plus "
+                        "rho V^pd over the PD cells, one value per node. "
+                        "consistent (newmark only): the consistent FE mass "
+                        "plus the PD lumped mass.");
+      prm.declare_entry("Reuse factorization",
+                        "true",
+                        Bool(),
+                        "Newmark: factorise M + beta dt^2 K once and reuse it "
+                        "while no bond breaks (false: every step, as the "
+                        "peer code does; for benchmarks).");
+      prm.declare_entry("Initial velocity",
+                        "",
+                        Anything(),
+                        "Dynamic runs: dim expressions of x, y, z separated "
+                        "by ';' (empty: at rest) [m/s].");
+      prm.declare_entry("Energy tolerance",
+                        "0.5",
+                        Double(),
+                        "Dynamic runs stop with exit state 'time step too "
+                        "large' when kinetic + strain + dissipated energy "
+                        "exceeds the initial energy plus the external work "
+                        "by more than this fraction of the largest energy "
+                        "supplied so far (> 0).");
+      prm.declare_entry("History interval",
+                        "1",
+                        Integer(1),
+                        "Dynamic runs: a history.csv row every this many "
+                        "steps (and at the last step).");
+      prm.declare_entry("Monitor points",
+                        "",
+                        Anything(),
+                        "Dynamic runs: 'name: (x, y[, z])' separated by ';'; "
+                        "the displacement of the node nearest to each point "
+                        "goes into history.csv as u_<name>_<component>.");
       prm.leave_subsection();
     }
 
     void
-    Driver::parse(ParameterHandler &prm, const std::string &file)
+    Driver::parse(ParameterHandler &prm, const std::string &file, int dim)
     {
       prm.enter_subsection("Driver");
-      type                    = prm.get("Type");
-      load_steps              = prm.get_integer("Load steps");
-      load_increment          = prm.get_double("Load increment");
-      jump_to_critical_load   = prm.get_bool("Jump to critical load");
-      hold_load_while_growing = prm.get_bool("Hold load while cracks grow");
-      residual_tolerance      = prm.get_double("Residual tolerance");
-      max_iterations          = prm.get_integer("Max iterations");
-      max_step_cuts      = prm.get_integer("Max step cuts");
-      step_cut_factor    = prm.get_double("Step cut factor");
-      line_search        = prm.get_bool("Line search");
-      arc_length_steps   = prm.get_integer("Arc length steps");
-      stability_check    = prm.get_bool("Stability check");
+      type                        = prm.get("Type");
+      load_steps                  = prm.get_integer("Load steps");
+      load_increment              = prm.get_double("Load increment");
+      jump_to_critical_load       = prm.get_bool("Jump to critical load");
+      hold_load_while_growing     = prm.get_bool("Hold load while cracks grow");
+      max_step_cuts               = prm.get_integer("Max step cuts");
+      step_cut_factor             = prm.get_double("Step cut factor");
+      line_search                 = prm.get_bool("Line search");
+      arc_length_steps            = prm.get_integer("Arc length steps");
+      stability_check             = prm.get_bool("Stability check");
+      residual_tolerance          = prm.get_double("Residual tolerance");
+      max_iterations              = prm.get_integer("Max iterations");
+      const std::string step_text = trim(prm.get("Time step"));
+      end_time                    = prm.get_double("End time");
+      safety_factor               = prm.get_double("Time step safety factor");
+      eigenvalue_iterations       = prm.get_integer("Eigenvalue iterations");
+      newmark_beta                = prm.get_double("Newmark beta");
+      newmark_gamma               = prm.get_double("Newmark gamma");
+      hht_alpha                   = prm.get_double("HHT alpha");
+      mass                        = prm.get("Mass");
+      reuse_factorization         = prm.get_bool("Reuse factorization");
+      initial_velocity            = split(prm.get("Initial velocity"), ';');
+      energy_tolerance            = prm.get_double("Energy tolerance");
+      history_interval            = prm.get_integer("History interval");
+      const std::string monitors  = prm.get("Monitor points");
       prm.leave_subsection();
       if (!(step_cut_factor > 0. && step_cut_factor < 1.))
         throw InputError(file,
                          "Driver/Step cut factor",
                          number(step_cut_factor) + " is not between 0 and 1",
                          "0 < factor < 1");
+
+      if (!dynamic())
+        return;
+      const std::string p = "Driver/";
+      if (step_text == "auto")
+        time_step = 0.;
+      else
+        {
+          std::size_t end = 0;
+          try
+            {
+              time_step = std::stod(step_text, &end);
+            }
+          catch (...)
+            {
+              end = 0;
+            }
+          if (end != step_text.size() || !(time_step > 0.))
+            throw InputError(file,
+                             p + "Time step",
+                             "'" + step_text + "' is not a positive time step",
+                             type == "explicit" ? "dt > 0 [s], or 'auto'" :
+                                                  "dt > 0 [s]");
+        }
+      if (type == "newmark" && time_step == 0.)
+        throw InputError(file,
+                         p + "Time step",
+                         "'auto' is for the explicit driver only (Newmark is "
+                         "unconditionally stable: the step is an accuracy "
+                         "choice)",
+                         "dt > 0 [s]");
+      if (!(end_time > 0.))
+        throw InputError(file,
+                         p + "End time",
+                         "end time = " + number(end_time) + " is not positive",
+                         "end time > 0 [s]");
+      if (!(safety_factor > 0.))
+        throw InputError(file,
+                         p + "Time step safety factor",
+                         number(safety_factor) + " is not positive",
+                         "factor > 0 (0.9 by default; above 1 is unstable)");
+      if (!(hht_alpha >= -1. / 3. - 1e-14 && hht_alpha <= 0.))
+        throw InputError(file,
+                         p + "HHT alpha",
+                         "alpha = " + number(hht_alpha) +
+                           " is outside the range of the HHT method",
+                         "-1/3 <= alpha <= 0");
+      if (type == "newmark" && hht_alpha == 0.)
+        {
+          if (!(newmark_gamma >= 0.5))
+            throw InputError(
+              file,
+              p + "Newmark gamma",
+              "gamma = " + number(newmark_gamma) +
+                " is outside the stable range (gamma < 1/2 amplifies "
+                "every mode)",
+              "gamma >= 0.5 with beta >= (2 gamma + 1)^2 / 16");
+          const double beta_min =
+            (2. * newmark_gamma + 1.) * (2. * newmark_gamma + 1.) / 16.;
+          if (!(newmark_beta >= beta_min - 1e-14) || !(newmark_beta <= 1.))
+            throw InputError(
+              file,
+              p + "Newmark beta",
+              "beta = " + number(newmark_beta) +
+                " is outside the unconditionally stable range for gamma = " +
+                number(newmark_gamma),
+              number(beta_min) + " = (2 gamma + 1)^2 / 16 <= beta <= 1");
+        }
+      if (type == "explicit" && mass == "consistent")
+        throw InputError(file,
+                         p + "Mass",
+                         "the explicit driver needs a lumped mass (a "
+                         "consistent mass would need a solve per step)",
+                         "lumped (or Type = newmark for a consistent mass)");
+      if (!initial_velocity.empty() &&
+          static_cast<int>(initial_velocity.size()) != dim)
+        throw InputError(file,
+                         p + "Initial velocity",
+                         "needs " + std::to_string(dim) + " expressions, got " +
+                           std::to_string(initial_velocity.size()),
+                         "empty, or dim expressions separated by ';'");
+      for (const auto &e : initial_velocity)
+        check_expression(e, file, p + "Initial velocity");
+      if (!(energy_tolerance > 0.))
+        throw InputError(file,
+                         p + "Energy tolerance",
+                         number(energy_tolerance) + " is not positive",
+                         "tolerance > 0");
+      for (const std::string &item : split(monitors, ';'))
+        {
+          const auto colon = item.find(':');
+          if (colon == std::string::npos)
+            throw InputError(file,
+                             p + "Monitor points",
+                             "cannot read '" + item + "'",
+                             "'name: (x, y[, z])' separated by ';'");
+          MonitorPoint m;
+          m.name  = trim(item.substr(0, colon));
+          m.point = parse_point(trim(item.substr(colon + 1)),
+                                file,
+                                p + "Monitor points",
+                                dim);
+          monitor_points.push_back(m);
+        }
     }
 
     // ------------------------------------------------------------------- RNP
@@ -908,8 +1107,22 @@ namespace pdfem
       rnp.parse(prm, file);
       boundary_conditions.parse(prm, file, dim);
       linear_solver.parse(prm, file);
-      driver.parse(prm, file);
+      driver.parse(prm, file, dim);
       fracture.parse(prm, file);
+      if (driver.dynamic() && !(material.density > 0.))
+        throw InputError(file,
+                         "Material/Density",
+                         "rho = " + number(material.density) +
+                           " for a dynamic run (Driver/Type = " + driver.type +
+                           ")",
+                         "rho > 0 [kg/m^3]");
+      if (driver.type == "newmark" && linear_solver.type == "gmres" &&
+          linear_solver.preconditioner == "amg fe")
+        throw InputError(file,
+                         "Linear solver/Preconditioner",
+                         "'amg fe' has no assembled matrix, which Newmark "
+                         "factorises once and reuses",
+                         "amg or ilu (or Type = direct)");
       output.parse(prm, file);
       const bool nonlinear_driver =
         driver.type == "newton" || driver.type == "arc length";
@@ -922,12 +1135,14 @@ namespace pdfem
                          "static or quasi-static, or Peridynamics/Model = "
                          "rnp");
       if (peridynamics.model == "rnp" &&
-          (driver.type == "quasi-static" || fracture.criterion != "none"))
+          (driver.type == "quasi-static" || driver.dynamic() ||
+           fracture.criterion != "none"))
         throw InputError(file,
                          driver.type == "quasi-static" ? "Driver/Type" :
                                                          "Fracture/Criterion",
                          "the rnp model softens its bonds itself: it takes "
-                         "no crack criterion and no quasi-static driver",
+                         "no crack criterion and no quasi-static or dynamic "
+                         "driver",
                          "Driver/Type = static, newton or arc length with "
                          "Fracture/Criterion = none");
     }

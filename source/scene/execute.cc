@@ -63,6 +63,8 @@ namespace pdfem
       int
       execute(Setup<dim> &setup, const RunOptions &options, MPI_Comm comm)
       {
+        if (setup.driver.dynamic())
+          return execute_dynamic<dim>(setup, options, comm);
         const auto    total_start = setup.total_start;
         const bool    root        = Utilities::MPI::this_mpi_process(comm) == 0;
         std::ostream *progress =

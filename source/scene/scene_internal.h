@@ -5,12 +5,14 @@
 #define PDFEM_SOURCE_SCENE_SCENE_INTERNAL_H
 
 #include <pdfem/coupling/coupled_system.h>
+#include <pdfem/drivers/dynamics.h>
 #include <pdfem/io/parameters.h>
 #include <pdfem/scene/scene.h>
 
 #include <deal.II/distributed/shared_tria.h>
 
 #include <chrono>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -52,7 +54,12 @@ namespace pdfem
         std::vector<unsigned int> reaction_group;
         /// Remarks printed on stderr before the run (unsupported options
         /// that do not change the result, and the like).
-        std::vector<std::string>              notes;
+        std::vector<std::string> notes;
+        /// Dynamic runs: builds the optional after-step hook (a fracture
+        /// criterion that may break bonds; returns whether any broke) once
+        /// the coupled system exists. Empty: no bond breaks.
+        std::function<Drivers::AfterStep(Coupling::CoupledSystem<dim> &)>
+                                              make_after_step;
         std::map<std::string, double>         timings;
         std::chrono::steady_clock::time_point total_start;
         std::chrono::steady_clock::time_point setup_start;
@@ -96,6 +103,15 @@ namespace pdfem
                   const Parameters::Scene &prm,
                   const RunOptions        &options,
                   MPI_Comm                 comm);
+
+      /// A dynamic run (Driver/Type = explicit or newmark; dynamic_run.cc):
+      /// the coupled system, the time integrator, history.csv with the
+      /// energy balance, VTU and summary.json.
+      template <int dim>
+      int
+      execute_dynamic(Setup<dim>       &setup,
+                      const RunOptions &options,
+                      MPI_Comm          comm);
 
       /// Set up the coupled system, run the driver, write every output.
       template <int dim>

@@ -14,6 +14,13 @@
 //       same header and rows; every column agrees to TOL relative to the
 //       largest magnitude among the columns of its quantity (same first
 //       letter).
+//   pdfem_check column history.csv COLUMN max|min|maxabs|last >|< BOUND
+//       a statistic of one column of a history (rows after the header).
+//   pdfem_check wave-speed history.csv COL_A X_A COL_B X_B LEVEL EXPECTED TOL
+//       the first times t_A, t_B at which |COL_A|, |COL_B| reach LEVEL
+//       (linear interpolation in the column "time"), the speed
+//       c = (X_B - X_A) / (t_B - t_A); passes if |c - EXPECTED| <= TOL
+//       EXPECTED.
 // Prints one line per check and exits 1 on any failure.
 #include <algorithm>
 #include <cmath>
@@ -173,6 +180,40 @@ namespace
       }
     return rows;
   }
+
+  /// Index of @p name in the header of @p rows, or exit with a message.
+  std::size_t
+  column_index(const std::vector<std::vector<std::string>> &rows,
+               const std::string                           &file,
+               const std::string                           &name)
+  {
+    if (!rows.empty())
+      for (std::size_t c = 0; c < rows[0].size(); ++c)
+        if (rows[0][c] == name)
+          return c;
+    std::cout << "FAIL " << file << " has no column " << name << "\n";
+    std::exit(1);
+  }
+
+  /// The first time |column| >= level, interpolated linearly; -1 if never.
+  double
+  first_crossing(const std::vector<std::vector<std::string>> &rows,
+                 const std::size_t                            time,
+                 const std::size_t                            column,
+                 const double                                 level)
+  {
+    double t0 = 0., v0 = 0.;
+    for (std::size_t r = 1; r < rows.size(); ++r)
+      {
+        const double t = std::stod(rows[r].at(time));
+        const double v = std::abs(std::stod(rows[r].at(column)));
+        if (v >= level)
+          return r == 1 ? t : t0 + (level - v0) / (v - v0) * (t - t0);
+        t0 = t;
+        v0 = v;
+      }
+    return -1.;
+  }
 } // namespace
 
 int
@@ -304,11 +345,68 @@ main(int argc, char **argv)
         }
       return ok ? 0 : 1;
     }
+  if (a.size() == 6 && a[0] == "column")
+    {
+      const auto        rows = read_csv(a[1]);
+      const std::size_t c    = column_index(rows, a[1], a[2]);
+      if (rows.size() < 2)
+        {
+          std::cout << "FAIL " << a[1] << " has no rows\n";
+          return 1;
+        }
+      double value = a[3] == "min" ? HUGE_VAL : a[3] == "last" ? 0. : -HUGE_VAL;
+      for (std::size_t r = 1; r < rows.size(); ++r)
+        {
+          const double v = std::stod(rows[r].at(c));
+          if (a[3] == "max")
+            value = std::max(value, v);
+          else if (a[3] == "min")
+            value = std::min(value, v);
+          else if (a[3] == "maxabs")
+            value = std::max(value, std::abs(v));
+          else
+            value = v;
+        }
+      const double bound = std::stod(a[5]);
+      const bool   ok =
+        std::isfinite(value) && (a[4] == ">" ? value > bound : value < bound);
+      std::cout.precision(10);
+      std::cout << (ok ? "ok   " : "FAIL ") << a[3] << "(" << a[2]
+                << ") = " << value << ", expected " << a[4] << " " << bound
+                << "\n";
+      return ok ? 0 : 1;
+    }
+  if (a.size() == 9 && a[0] == "wave-speed")
+    {
+      const auto        rows = read_csv(a[1]);
+      const std::size_t time = column_index(rows, a[1], "time");
+      const std::size_t ca   = column_index(rows, a[1], a[2]);
+      const std::size_t cb   = column_index(rows, a[1], a[4]);
+      const double      xa = std::stod(a[3]), xb = std::stod(a[5]);
+      const double      level    = std::stod(a[6]);
+      const double      expected = std::stod(a[7]);
+      const double      tol      = std::stod(a[8]);
+      const double      ta       = first_crossing(rows, time, ca, level);
+      const double      tb       = first_crossing(rows, time, cb, level);
+      const double      c  = (ta >= 0. && tb > ta) ? (xb - xa) / (tb - ta) : 0.;
+      const bool        ok = std::abs(c - expected) <= tol * std::abs(expected);
+      std::cout.precision(6);
+      std::cout << (ok ? "ok   " : "FAIL ") << "wave speed " << c << " (|"
+                << a[2] << "| and |" << a[4] << "| reach " << level
+                << " at t = " << ta << ", " << tb << "), expected " << expected
+                << " (rel " << tol << ", error "
+                << std::abs(c - expected) / std::abs(expected) << ")\n";
+      return ok ? 0 : 1;
+    }
   std::cerr << "usage: pdfem_check value FILE KEY EXPECTED rel|abs TOL\n"
                "       pdfem_check string FILE KEY EXPECTED\n"
                "       pdfem_check get FILE KEY\n"
                "       pdfem_check bound FILE KEY >|< BOUND\n"
                "       pdfem_check nondecreasing FILE COLUMN\n"
-               "       pdfem_check csv A B TOL\n";
+               "       pdfem_check csv A B TOL\n"
+               "       pdfem_check column CSV COLUMN max|min|maxabs|last >|< "
+               "BOUND\n"
+               "       pdfem_check wave-speed CSV COL_A X_A COL_B X_B LEVEL "
+               "EXPECTED TOL\n";
   return 2;
 }

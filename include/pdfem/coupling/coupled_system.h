@@ -2,7 +2,7 @@
 #ifndef PDFEM_COUPLING_COUPLED_SYSTEM_H
 #define PDFEM_COUPLING_COUPLED_SYSTEM_H
 
-#include <pdfem/drivers/system_interface.h>
+#include <pdfem/drivers/dynamic_system_interface.h>
 #include <pdfem/fe/elastic_material.h>
 #include <pdfem/io/parameters.h>
 #include <pdfem/mesh/cracks.h>
@@ -181,9 +181,15 @@ namespace pdfem
      * entry, zero residual). A PD node whose intact bonds can no longer carry
      * the second-order fit and that has no FE cell is "decoupled": it is held
      * where it is in the same way, so that it never makes the matrix singular.
+     *
+     * Dynamics (coupled_system_dynamics.cc): M a + f_int(u) = f_ext(t) with
+     * the lumped mass of specs/004 §1.3 (FE row sums over the FE cells plus
+     * rho V_k^pd over the PD cells, one value per node) or the consistent FE
+     * mass plus the PD lumped mass, f_int matrix-free, and the effective
+     * matrix K_N = c_m M + c_k K factorised once and reused.
      */
     template <int dim>
-    class CoupledSystem : public Drivers::SystemInterface
+    class CoupledSystem : public Drivers::DynamicSystemInterface
     {
     public:
       /// Set up nodes, families, DoFs and the sparsity pattern. @p cell_is_pd
@@ -207,6 +213,53 @@ namespace pdfem
       force_scale() const override;
       unsigned int
       solve_linear(Vector &du, const Vector &r) override;
+
+      /// @name Dynamics (Drivers::DynamicSystemInterface)
+      /// @{
+      const Vector &
+      lumped_mass() override;
+      void
+      internal_force(const Vector &u, Vector &f) override;
+      void
+      external_force(double t, Vector &f) override;
+      const std::vector<unsigned int> &
+      held_dofs() const override;
+      void
+      factorize_effective(double mass_factor,
+                          double stiffness_factor,
+                          bool   consistent_mass) override;
+      unsigned int
+      solve_effective(Vector &x, const Vector &b) override;
+      void
+      mass_vmult(Vector &y, const Vector &x) override;
+      double
+      thickness() const override;
+      void
+      pseudo_random(Vector &x) const override;
+      /// Reactions (see reactions()) from the last internal_force() and
+      /// external_force() calls, without evaluating them again.
+      void
+      update_reactions();
+      /// Number of factorisations (or preconditioner set-ups) of K_N so far.
+      unsigned int
+      n_effective_factorizations() const;
+      /// @p v = the @p dim expressions of x, y, z (t = 0) at every owned
+      /// node (an initial velocity field; the expressions were checked when
+      /// the parameter @p parameter was read).
+      void
+      interpolate(const std::vector<std::string> &expressions,
+                  const std::string              &parameter,
+                  Vector                         &v) const;
+      /// The node nearest to @p p (every rank gives the same answer).
+      unsigned int
+      nearest_node(const dealii::Point<dim> &p) const;
+      /// The position of node @p k.
+      dealii::Point<dim>
+      node_position(unsigned int k) const;
+      /// Displacement of node @p k (collective: every rank gets it).
+      dealii::Tensor<1, dim>
+      node_displacement(const Vector &u, unsigned int k) const;
+      /// @}
 
       /// Global counts (the same on every rank).
       ProblemSize

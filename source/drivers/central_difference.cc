@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <pdfem/base/exceptions.h>
+#include <pdfem/drivers/central_difference.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "dynamics_internal.h"
+
+namespace pdfem
+{
+  namespace Drivers
+  {
+    using namespace internal;
+
+    CentralDifference::CentralDifference(const Parameters::Driver &settings)
+      : settings(settings)
+    {}
+
+    void
+    CentralDifference::run(DynamicSystemInterface &system,
+                           Vector                 &U,
+                           const Vector           &v0,
+                           const OnStep           &on_step,
+                           const AfterStep        &after_step)
+    {
+      auto start = clock::now();
+      estimate =
+        estimate_stable_time_step(system, settings.eigenvalue_iterations);
+      time_spent.eigenvalue = seconds_since(start);
+      dt                    = settings.time_step > 0. ?
+                                settings.time_step :
+                                settings.safety_factor * estimate.critical_time_step;
+      if (!(dt > 0.))
+        throw RunFailure("time step too large",
+                         "no stable time step: the largest eigenvalue of "
+                         "M^-1 K is not positive (no free DoF?)");
+      const unsigned int n_steps =
+        static_cast<unsigned int>(std::ceil(settings.end_time / dt - 1e-9));
+      const MPI_Comm comm = U.get_mpi_communicator();
+
+      const Vector &M = system.lumped_mass();
+      Vector        V, A, F_int, F_ext;
+      system.initialize_vector(V);
+      system.initialize_vector(A);
+      system.initialize_vector(F_int);
+      system.initialize_vector(F_ext);
+      std::vector<char>   held = held_flags(system, U);
+      const std::size_t   n    = held.size();
+      std::vector<double> held_old;
+      // Half-step velocities of this and the last step: their correlation
+      // tells a time-step instability (out of phase) from a growing mode.
+      std::vector<double> half(n, 0.), half_old(n, 0.);
+
+      // t = 0: prescribed values, initial velocity on the free DoFs.
+      system.apply_dirichlet(U, 0.);
+      V = v0;
+      system.internal_force(U, F_int);
+      system.external_force(0., F_ext);
+      const double *m            = M.begin();
+      auto          acceleration = [&]() {
+        double       *a  = A.begin();
+        const double *fi = F_int.begin();
+        const double *fe = F_ext.begin();
+        for (std::size_t i = 0; i < n; ++i)
+          a[i] = held[i] ? 0. : (fe[i] - fi[i]) / m[i];
+      };
+      auto kinetic = [&]() {
+        const double *v     = V.begin();
+        double        local = 0.;
+        for (std::size_t i = 0; i < n; ++i)
+          if (!held[i])
+            local += m[i] * v[i] * v[i];
+        return 0.5 * dealii::Utilities::MPI::sum(local, comm);
+      };
+      {
+        double *v = V.begin();
+        for (std::size_t i = 0; i < n; ++i)
+          if (held[i])
+            v[i] = 0.;
+      }
+      acceleration();
+      EnergyAccount energy;
+      energy.start(U, F_int, F_ext, held, kinetic(), comm);
+      DynamicRecord record;
+      record.time_step = dt;
+      energy.record(record);
+      on_step(record);
+
+      const auto loop_start = clock::now();
+      for (unsigned int step = 1; step <= n_steps; ++step)
+        {
+          const double t = step * dt;
+          start          = clock::now();
+          {
+            double       *u = U.begin();
+            double       *v = V.begin();
+            const double *a = A.begin();
+            held_old.clear();
+            for (std::size_t i = 0; i < n; ++i)
+              if (held[i])
+                held_old.push_back(u[i]);
+              else
+                {
+                  v[i] += 0.5 * dt * a[i];
+                  u[i] += dt * v[i];
+                }
+            half.swap(half_old);
+            std::copy(v, v + n, half.begin());
+          }
+          system.apply_dirichlet(U, t);
+          time_spent.update += seconds_since(start);
+
+          start = clock::now();
+          system.internal_force(U, F_int);
+          time_spent.internal_force += seconds_since(start);
+          start = clock::now();
+          system.external_force(t, F_ext);
+          time_spent.external_force += seconds_since(start);
+
+          start = clock::now();
+          acceleration();
+          {
+            double       *v = V.begin();
+            const double *a = A.begin();
+            for (std::size_t i = 0; i < n; ++i)
+              if (!held[i])
+                v[i] += 0.5 * dt * a[i];
+          }
+          energy.step(U, F_int, F_ext, held, kinetic());
+          time_spent.update += seconds_since(start);
+
+          record           = DynamicRecord();
+          record.step      = step;
+          record.time      = t;
+          record.time_step = dt;
+          if (after_step)
+            {
+              start              = clock::now();
+              record.bonds_broke = after_step(U, t);
+              if (record.bonds_broke)
+                {
+                  // Forces at the same u with the new bonds: the released
+                  // strain energy is dissipated; a^n+1 and the second half
+                  // of v^n+1 are redone with them.
+                  double       *v = V.begin();
+                  const double *a = A.begin();
+                  for (std::size_t i = 0; i < n; ++i)
+                    if (!held[i])
+                      v[i] -= 0.5 * dt * a[i];
+                  held = held_flags(system, U);
+                  system.internal_force(U, F_int);
+                  energy.bonds_broke(U, F_int);
+                  acceleration();
+                  a = A.begin();
+                  for (std::size_t i = 0; i < n; ++i)
+                    if (held[i])
+                      v[i] = 0.;
+                    else
+                      v[i] += 0.5 * dt * a[i];
+                }
+              time_spent.callback += seconds_since(start);
+            }
+          energy.record(record);
+          ++time_spent.n_steps;
+          if (energy.unstable(settings.energy_tolerance))
+            {
+              time_spent.steps = seconds_since(loop_start);
+              on_step(record);
+              double local[3] = {0., 0., 0.};
+              for (std::size_t i = 0; i < n; ++i)
+                if (!held[i])
+                  {
+                    local[0] += half[i] * half_old[i];
+                    local[1] += half[i] * half[i];
+                    local[2] += half_old[i] * half_old[i];
+                  }
+              double global[3];
+              dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(local,
+                                                                          3),
+                                          comm,
+                                          dealii::ArrayView<double>(global, 3));
+              const double correlation =
+                global[1] > 0. && global[2] > 0. ?
+                  global[0] / std::sqrt(global[1] * global[2]) :
+                  -1.;
+              throw_unstable(energy,
+                             dt,
+                             estimate.critical_time_step,
+                             std::min(settings.safety_factor, 0.9),
+                             step,
+                             t,
+                             true,
+                             correlation,
+                             report);
+            }
+          on_step(record);
+        }
+      time_spent.steps = seconds_since(loop_start);
+    }
+  } // namespace Drivers
+} // namespace pdfem

@@ -1,0 +1,233 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <pdfem/base/exceptions.h>
+#include <pdfem/drivers/newmark.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <cmath>
+
+#include "dynamics_internal.h"
+
+namespace pdfem
+{
+  namespace Drivers
+  {
+    using namespace internal;
+
+    Newmark::Newmark(const Parameters::Driver &settings)
+      : settings(settings)
+    {}
+
+    void
+    Newmark::run(DynamicSystemInterface &system,
+                 Vector                 &U,
+                 const Vector           &v0,
+                 const OnStep           &on_step,
+                 const AfterStep        &after_step)
+    {
+      const double dt = settings.time_step;
+      // HHT-alpha (Hilber, Hughes & Taylor 1977): alpha in [-1/3, 0] damps
+      // high frequencies; beta and gamma follow from it.
+      const double alpha = settings.hht_alpha;
+      const double beta =
+        alpha != 0. ? (1. - alpha) * (1. - alpha) / 4. : settings.newmark_beta;
+      const double gamma = alpha != 0. ? 0.5 - alpha : settings.newmark_gamma;
+      const bool   consistent = settings.mass == "consistent";
+      const unsigned int n_steps =
+        static_cast<unsigned int>(std::ceil(settings.end_time / dt - 1e-9));
+      const MPI_Comm comm = U.get_mpi_communicator();
+
+      const Vector &M = system.lumped_mass();
+      // R_old = f_ext - f_int at the last step (HHT's alpha-weighted part).
+      Vector V, A, A_new, F_int, F_ext, R, R_old, MV;
+      for (Vector *w : {&V, &A, &A_new, &F_int, &F_ext, &R, &R_old, &MV})
+        system.initialize_vector(*w);
+      std::vector<char> held = held_flags(system, U);
+      const std::size_t n    = held.size();
+
+      auto kinetic = [&]() {
+        // 1/2 v_f . M_ff v_f: held entries of v are zero.
+        system.mass_vmult(MV, V);
+        return 0.5 * (V * MV);
+      };
+      auto zero_held = [&](Vector &w) {
+        double *x = w.begin();
+        for (std::size_t i = 0; i < n; ++i)
+          if (held[i])
+            x[i] = 0.;
+      };
+      auto factorize = [&]() {
+        const auto start = clock::now();
+        system.factorize_effective(1.,
+                                   (1. + alpha) * beta * dt * dt,
+                                   consistent);
+        ++factorizations;
+        time_spent.factorize += seconds_since(start);
+      };
+
+      // t = 0: a0 from M a0 = f_ext - f_int on the free DoFs.
+      system.apply_dirichlet(U, 0.);
+      V = v0;
+      zero_held(V);
+      system.internal_force(U, F_int);
+      system.external_force(0., F_ext);
+      R = F_ext;
+      R -= F_int;
+      zero_held(R);
+      R_old = R;
+      if (consistent)
+        {
+          auto start = clock::now();
+          system.factorize_effective(1., 0., true);
+          ++factorizations;
+          time_spent.factorize += seconds_since(start);
+          start = clock::now();
+          system.solve_effective(A, R);
+          time_spent.solve += seconds_since(start);
+        }
+      else
+        {
+          A               = R;
+          const double *m = M.begin();
+          double       *a = A.begin();
+          for (std::size_t i = 0; i < n; ++i)
+            a[i] = held[i] ? 0. : a[i] / m[i];
+        }
+      EnergyAccount energy;
+      energy.start(U, F_int, F_ext, held, kinetic(), comm);
+      DynamicRecord record;
+      record.time_step = dt;
+      energy.record(record);
+      on_step(record);
+
+      bool       refactor   = true;
+      const auto loop_start = clock::now();
+      for (unsigned int step = 1; step <= n_steps; ++step)
+        {
+          const double t = step * dt;
+          if (refactor || !settings.reuse_factorization)
+            {
+              factorize();
+              refactor = false;
+            }
+          // Predictor u~ (in U) on the free DoFs; held DoFs (v = a = 0
+          // there) keep their value or take the prescribed one at t.
+          auto start = clock::now();
+          {
+            double       *u = U.begin();
+            const double *v = V.begin();
+            const double *a = A.begin();
+            for (std::size_t i = 0; i < n; ++i)
+              if (!held[i])
+                u[i] += dt * v[i] + dt * dt * (0.5 - beta) * a[i];
+          }
+          system.apply_dirichlet(U, t);
+          time_spent.update += seconds_since(start);
+
+          start = clock::now();
+          system.internal_force(U, F_int);
+          time_spent.internal_force += seconds_since(start);
+          start = clock::now();
+          system.external_force(t, F_ext);
+          time_spent.external_force += seconds_since(start);
+          // (1 + alpha)(f_ext^n+1 - f_int(u~)) - alpha (f_ext^n - f_int(u^n))
+          R = F_ext;
+          R -= F_int;
+          zero_held(R);
+          if (alpha != 0.)
+            {
+              R *= 1. + alpha;
+              R.add(-alpha, R_old);
+            }
+
+          start                    = clock::now();
+          record                   = DynamicRecord();
+          record.linear_iterations = system.solve_effective(A_new, R);
+          time_spent.solve += seconds_since(start);
+
+          start = clock::now();
+          {
+            double      *u    = U.begin();
+            double      *v    = V.begin();
+            double      *a    = A.begin();
+            double      *an   = A_new.begin();
+            const double bdt2 = beta * dt * dt;
+            for (std::size_t i = 0; i < n; ++i)
+              if (!held[i])
+                {
+                  u[i] += bdt2 * an[i];
+                  v[i] += dt * ((1. - gamma) * a[i] + gamma * an[i]);
+                  a[i] = an[i];
+                }
+          }
+          time_spent.update += seconds_since(start);
+          start = clock::now();
+          system.internal_force(U, F_int);
+          time_spent.internal_force += seconds_since(start);
+          start = clock::now();
+          energy.step(U, F_int, F_ext, held, kinetic());
+          if (alpha != 0.)
+            {
+              R_old = F_ext;
+              R_old -= F_int;
+              zero_held(R_old);
+            }
+          time_spent.update += seconds_since(start);
+
+          record.step             = step;
+          record.time             = t;
+          record.time_step        = dt;
+          record.n_factorizations = factorizations;
+          if (after_step)
+            {
+              start              = clock::now();
+              record.bonds_broke = after_step(U, t);
+              if (record.bonds_broke)
+                {
+                  held = held_flags(system, U);
+                  zero_held(V);
+                  zero_held(A);
+                  system.internal_force(U, F_int);
+                  energy.bonds_broke(U, F_int);
+                  // a^n+1 for the new bonds (M a = f_ext - f_int(u)), so
+                  // that the next step starts in balance; K_N is
+                  // refactorised at the next step.
+                  R = F_ext;
+                  R -= F_int;
+                  zero_held(R);
+                  R_old = R;
+                  if (consistent)
+                    {
+                      const auto t0 = clock::now();
+                      system.factorize_effective(1., 0., true);
+                      ++factorizations;
+                      system.solve_effective(A, R);
+                      time_spent.factorize += seconds_since(t0);
+                    }
+                  else
+                    {
+                      const double *m = M.begin();
+                      const double *r = R.begin();
+                      double       *a = A.begin();
+                      for (std::size_t i = 0; i < n; ++i)
+                        a[i] = held[i] ? 0. : r[i] / m[i];
+                    }
+                  refactor = true;
+                }
+              time_spent.callback += seconds_since(start);
+            }
+          energy.record(record);
+          ++time_spent.n_steps;
+          if (energy.unstable(settings.energy_tolerance))
+            {
+              time_spent.steps = seconds_since(loop_start);
+              on_step(record);
+              InstabilityReport report;
+              throw_unstable(energy, dt, 0., 0.9, step, t, false, 1., report);
+            }
+          on_step(record);
+        }
+      time_spent.steps = seconds_since(loop_start);
+    }
+  } // namespace Drivers
+} // namespace pdfem
