@@ -1124,6 +1124,17 @@ namespace pdfem
                          "factorises once and reuses",
                          "amg or ilu (or Type = direct)");
       output.parse(prm, file);
+      if (driver.dynamic() &&
+          (fracture.criterion == "mcts" || fracture.adaptive_margin > 0.))
+        throw InputError(file,
+                         fracture.criterion == "mcts" ?
+                           "Fracture/Criterion" :
+                           "Fracture/Adaptive margin",
+                         "stress-intensity factors (mcts) and the adaptive "
+                         "PD region belong to quasi-static runs",
+                         "Criterion = none or max principal stress, "
+                         "Adaptive margin = 0 with Driver/Type = " +
+                           driver.type);
       const bool nonlinear_driver =
         driver.type == "newton" || driver.type == "arc length";
       if (nonlinear_driver && peridynamics.model != "rnp")

@@ -251,11 +251,12 @@ namespace pdfem
                                "Time step > 0 (auto: explicit only), safety "
                                "factor > 0, End time > 0, History interval "
                                ">= 1");
-            if (model.failure_criterion != 0)
+            if (model.failure_criterion == 1)
               setup.notes.push_back(
-                cmd + ": FC " + std::to_string(model.failure_criterion) +
-                ": dynamic bond breaking is not wired yet; every bond stays "
-                "intact");
+                cmd + ": FC 1 in a DYNAMIC run: stress-intensity factors "
+                      "and MCTS growth are quasi-static; every bond stays "
+                      "intact (the peer's code moves the tips and breaks "
+                      "nothing either). FC 2 breaks bonds in dynamic runs");
           }
         if (!dynamic && !driver_overrides.empty())
           throw InputError("--set",
