@@ -64,6 +64,44 @@ namespace pdfem
     }
 
     template <int dim>
+    unsigned long
+    CoupledSystem<dim>::break_bonds_if(
+      const std::function<bool(unsigned int, unsigned int)> &breaks)
+    {
+      Impl         &s = *impl;
+      PD::Families &f = s.families;
+      unsigned long n = 0;
+      for (std::size_t o = 0; o < f.owners.size(); ++o)
+        {
+          const unsigned int k = f.owners[o];
+          if (s.no_fail[k])
+            continue;
+          for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
+            if (f.intact[b] && !s.no_fail[f.members[b]] &&
+                breaks(k, f.members[b]))
+              {
+                f.intact[b] = 0;
+                ++n;
+              }
+        }
+      n = Utilities::MPI::sum(n, s.comm);
+      if (n > 0)
+        {
+          s.update_decoupled();
+          s.update_held();
+          s.block_inverse.clear();
+        }
+      return n;
+    }
+
+    template <int dim>
+    const std::vector<double> &
+    CoupledSystem<dim>::horizons() const
+    {
+      return impl->horizon;
+    }
+
+    template <int dim>
     std::vector<std::array<unsigned int, 2>>
     CoupledSystem<dim>::intact_bonds() const
     {
@@ -130,11 +168,14 @@ namespace pdfem
       return pieces;
     }
 
-#define INSTANTIATE(dim)                                          \
-  template unsigned long CoupledSystem<dim>::break_bonds(         \
-    const std::vector<Mesh::Crack<dim>> &);                       \
-  template std::vector<std::array<unsigned int, 2>>               \
-                        CoupledSystem<dim>::intact_bonds() const; \
+#define INSTANTIATE(dim)                                                    \
+  template unsigned long CoupledSystem<dim>::break_bonds(                   \
+    const std::vector<Mesh::Crack<dim>> &);                                 \
+  template unsigned long CoupledSystem<dim>::break_bonds_if(                \
+    const std::function<bool(unsigned int, unsigned int)> &);               \
+  template const std::vector<double> &CoupledSystem<dim>::horizons() const; \
+  template std::vector<std::array<unsigned int, 2>>                         \
+                        CoupledSystem<dim>::intact_bonds() const;           \
   template unsigned int CoupledSystem<dim>::count_pieces(unsigned int) const;
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

@@ -145,6 +145,10 @@ namespace pdfem
       principal_stress(Coupling::CoupledSystem<dim>      &system,
                        const Coupling::NodalResults<dim> &results,
                        bool                               allow_growth);
+      Assessment
+      critical_stretch(Coupling::CoupledSystem<dim>      &system,
+                       const Coupling::NodalResults<dim> &results,
+                       bool                               allow_growth);
     };
 
     template <int dim>
@@ -221,6 +225,8 @@ namespace pdfem
         a = impl->mcts(system, results, allow_growth);
       else if (impl->settings.criterion == "max principal stress")
         a = impl->principal_stress(system, results, allow_growth);
+      else if (impl->settings.criterion == "critical stretch")
+        a = impl->critical_stretch(system, results, allow_growth);
       else
         a.critical_load_ratio = std::numeric_limits<double>::infinity();
       if (a.broken_bonds > 0)
@@ -372,6 +378,52 @@ namespace pdfem
       a.broken_bonds = system.break_bonds(cracks);
       segments.insert(segments.end(), cracks.begin(), cracks.end());
       virtual_cracks.insert(virtual_cracks.end(), cracks.begin(), cracks.end());
+      return a;
+    }
+
+    template <int dim>
+    Assessment
+    CrackGrowth<dim>::Impl::critical_stretch(
+      Coupling::CoupledSystem<dim>      &system,
+      const Coupling::NodalResults<dim> &results,
+      const bool                         allow_growth)
+    {
+      // s_c given, or from G_c by the bond-based energy release through a
+      // crack plane (Silling & Askari 2005 in 3D; Ha & Bobaru 2010 in plane
+      // stress): an approximation for PDLSM, whose bonds carry no energy
+      // of their own.
+      const double               E        = material.youngs_modulus;
+      const double               nu       = material.poissons_ratio;
+      const double               K        = E / (3. * (1. - 2. * nu));
+      const std::vector<double> &delta    = system.horizons();
+      const auto                 critical = [&](const unsigned int k) {
+        if (settings.critical_stretch > 0.)
+          return settings.critical_stretch;
+        const double G = settings.fracture_energy;
+        return dim == 2 ? std::sqrt(4. * M_PI * G / (9. * E * delta[k])) :
+                                          std::sqrt(5. * G / (9. * K * delta[k]));
+      };
+      const auto stretch = [&](const unsigned int k, const unsigned int m) {
+        const Tensor<1, dim> xi = results.position[m] - results.position[k];
+        const Tensor<1, dim> eta =
+          results.displacement[m] - results.displacement[k];
+        return ((xi + eta).norm() - xi.norm()) / xi.norm();
+      };
+      const MPI_Comm comm =
+        system.dof_handler().get_triangulation().get_communicator();
+      double ratio = 0.; // the largest stretch / critical stretch
+      for (const auto &[k, m] : system.intact_bonds())
+        ratio = std::max(ratio, stretch(k, m) / critical(k));
+      Assessment a;
+      a.max_driving_value   = Utilities::MPI::max(ratio, comm);
+      a.critical_load_ratio = a.max_driving_value > 0. ?
+                                1. / a.max_driving_value :
+                                std::numeric_limits<double>::infinity();
+      if (allow_growth)
+        a.broken_bonds = system.break_bonds_if(
+          [&](const unsigned int k, const unsigned int m) {
+            return stretch(k, m) > critical(k);
+          });
       return a;
     }
 

@@ -900,7 +900,7 @@ namespace pdfem
       prm.declare_entry(
         "Criterion",
         "none",
-        Selection("none|mcts|max principal stress"),
+        Selection("none|mcts|max principal stress|critical stretch"),
         "none: cracks never grow. mcts: stress-intensity factors K_I, K_II "
         "and J at every crack tip by the domain interaction integral; a tip "
         "grows by 'Growth length' in the direction of the maximum "
@@ -908,7 +908,10 @@ namespace pdfem
         "(2D; PDLSM-FEM FC 1). max principal stress: bonds whose averaged "
         "nodal stress has a principal value above 'Tensile strength' get a "
         "virtual crack normal to that direction (PDLSM-FEM FC 2; 2D and "
-        "3D). In static runs the criterion is only evaluated and reported.");
+        "3D). critical stretch: a bond breaks when its stretch "
+        "(|xi + eta| - |xi|) / |xi| exceeds 'Critical stretch' (2D and 3D; "
+        "quasi-static and dynamic). In static runs the criterion is only "
+        "evaluated and reported.");
       prm.declare_entry("Fracture toughness",
                         "0",
                         Double(0.),
@@ -941,6 +944,17 @@ namespace pdfem
                         Integer(0),
                         "max principal stress: at most this many bonds (the "
                         "most stressed) get a virtual crack per step; 0: all.");
+      prm.declare_entry("Critical stretch",
+                        "0",
+                        Double(0.),
+                        "critical stretch: s_c; 0: from 'Fracture energy' by "
+                        "the bond-based relation, s_c = sqrt(4 pi G_c / (9 E "
+                        "delta)) in 2D, sqrt(5 G_c / (9 K delta)) in 3D (K "
+                        "the bulk modulus, delta the owner's horizon).");
+      prm.declare_entry("Fracture energy",
+                        "0",
+                        Double(0.),
+                        "G_c [J/m^2] for the critical stretch.");
       prm.declare_entry("Adaptive margin",
                         "0",
                         Double(0.),
@@ -962,6 +976,8 @@ namespace pdfem
       growth_length       = prm.get_double("Growth length");
       top_k               = prm.get_integer("Top K");
       adaptive_margin     = prm.get_double("Adaptive margin");
+      critical_stretch    = prm.get_double("Critical stretch");
+      fracture_energy     = prm.get_double("Fracture energy");
       prm.leave_subsection();
       if (criterion == "mcts" && !(toughness > 0.))
         throw InputError(file,
@@ -976,6 +992,15 @@ namespace pdfem
                            " is not positive (Criterion = max principal "
                            "stress needs it)",
                          "sigma_ult > 0 [Pa]");
+      if (criterion == "critical stretch" && !(critical_stretch > 0.) &&
+          !(fracture_energy > 0.))
+        throw InputError(file,
+                         "Fracture/Critical stretch",
+                         "neither the critical stretch nor the fracture "
+                         "energy is positive (Criterion = critical stretch "
+                         "needs one)",
+                         "Critical stretch > 0, or Fracture energy > 0 "
+                         "[J/m^2]");
       if (!(domain_outer_radius > domain_inner_radius))
         throw InputError(file,
                          "Fracture/Domain outer radius",

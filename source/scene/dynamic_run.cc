@@ -238,7 +238,8 @@ namespace pdfem
         // refactorises.
         std::unique_ptr<Fracture::CrackGrowth<dim>> growth;
         double                                      criterion_time = 0.;
-        if (setup.fracture.criterion == "max principal stress")
+        if (setup.fracture.criterion == "max principal stress" ||
+            setup.fracture.criterion == "critical stretch")
           {
             growth =
               std::make_unique<Fracture::CrackGrowth<dim>>(setup.fracture,

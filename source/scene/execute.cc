@@ -111,7 +111,8 @@ namespace pdfem
                                                          setup.tip_at_end);
         const bool         mcts = fracture.criterion == "mcts";
         const bool         fc2  = fracture.criterion == "max principal stress";
-        const unsigned int n_tips = growth ? growth->tips().size() : 0;
+        const bool         stretch = fracture.criterion == "critical stretch";
+        const unsigned int n_tips  = growth ? growth->tips().size() : 0;
 
         // ---- history
         const auto               reaction_sets = system->reaction_names();
@@ -144,6 +145,8 @@ namespace pdfem
             }
         if (fc2)
           columns.push_back("max_bond_principal_stress");
+        if (stretch)
+          columns.push_back("max_stretch_ratio");
         if (fracture.adaptive_margin > 0.)
           columns.push_back("pd_cells");
         columns.push_back("wall_seconds");
@@ -208,7 +211,7 @@ namespace pdfem
                           tip.sif.K_II,
                           tip.K_eq,
                           tip.sif.J});
-          if (fc2)
+          if (fc2 || stretch)
             row.push_back(assessment.max_driving_value);
           if (fracture.adaptive_margin > 0.)
             row.push_back(s.n_pd_cells);
@@ -240,6 +243,9 @@ namespace pdfem
                 *progress << "  sigma_1/sigma_ult " << std::setprecision(3)
                           << assessment.max_driving_value /
                                fracture.tensile_strength;
+              if (stretch)
+                *progress << "  s/s_c " << std::setprecision(3)
+                          << assessment.max_driving_value;
               *progress << "  left ~" << std::fixed << std::setprecision(1)
                         << spent / record.step * (n - record.step) << " s"
                         << std::defaultfloat << std::endl;
@@ -433,6 +439,8 @@ namespace pdfem
             if (fc2)
               json.value("max_bond_principal_stress",
                          assessment.max_driving_value);
+            if (stretch)
+              json.value("max_stretch_ratio", assessment.max_driving_value);
             json.begin_object("reaction");
             const auto reactions = system->reactions();
             for (std::size_t s = 0; s < reaction_sets.size(); ++s)

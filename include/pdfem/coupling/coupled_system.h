@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -278,10 +279,24 @@ namespace pdfem
       unsigned long
       break_bonds(const std::vector<Mesh::Crack<dim>> &cracks);
 
+      /**
+       * Break every intact bond (k, m) of this rank's families for which
+       * @p breaks(k, m) is true (node indices), except bonds of no-fail
+       * nodes; collective, like break_bonds(). A symmetric predicate breaks
+       * both directions of a bond between two PD nodes.
+       */
+      unsigned long
+      break_bonds_if(
+        const std::function<bool(unsigned int, unsigned int)> &breaks);
+
       /// The intact bonds (k, m) of this rank's families (node indices; a
       /// bond between two PD nodes appears once from each side).
       std::vector<std::array<unsigned int, 2>>
       intact_bonds() const;
+
+      /// The horizon delta_k of every node (replicated; 0 for FE nodes).
+      const std::vector<double> &
+      horizons() const;
 
       /**
        * The number of pieces the body is in: connected components of the

@@ -49,7 +49,8 @@ namespace pdfem
       /// load at which the criterion would be met if nothing grew (infinite
       /// when nothing loads the crack).
       double critical_load_ratio = 0.;
-      /// The largest bond principal stress (FC2) or K_eq (FC1) seen.
+      /// The largest bond principal stress (FC2), K_eq (FC1) or stretch over
+      /// critical stretch seen.
       double max_driving_value = 0.;
       /// Pieces of the body (only counted after growth, else 1).
       unsigned int pieces = 1;
@@ -73,6 +74,10 @@ namespace pdfem
      *   get a virtual crack through the bond's midpoint, normal to the
      *   principal direction, of length d (a segment in 2D, a disc of
      *   diameter d in 3D, eq. 45), and every bond crossing one breaks.
+     * - `critical stretch`: a bond breaks when its stretch (|xi + eta| -
+     *   |xi|)/|xi| exceeds s_c, given or from G_c by the bond-based
+     *   relation (Silling & Askari 2005; Ha & Bobaru 2010); for dynamic
+     *   fracture, where cracks may branch freely.
      *
      * Ends of the initial cracks are tips when they lie inside the body and
      * touch no other crack (a central crack given as two cracks from its

@@ -247,6 +247,11 @@ namespace pdfem
       /// m_e: FE cells within m_e element sizes of a crack become PD (at the
       /// start and as cracks grow); 0 = the PD region never changes.
       double adaptive_margin = 0.;
+      /// critical stretch: s_c; 0 = from fracture_energy (G_c) by the
+      /// bond-based relation (2D: sqrt(4 pi G_c / (9 E delta)), 3D:
+      /// sqrt(5 G_c / (9 K delta))).
+      double critical_stretch = 0.;
+      double fracture_energy  = 0.; // G_c [J/m^2]
 
       static void
       declare(dealii::ParameterHandler &prm);
