@@ -303,8 +303,8 @@ namespace pdfem
         start = clock::now();
         if (!reaction_sets.empty())
           system.residual(u, last.time, r, false);
-        const auto          final_reactions = system.reactions();
-        const unsigned long n_broken_bonds  = system.size().n_broken_bonds;
+        const auto                        final_reactions = system.reactions();
+        const Coupling::ProblemSize       final_size      = system.size();
         const Coupling::NodalResults<dim> results = system.nodal_results(u);
         IO::FieldOutput<dim>              field_output(setup.out_dir,
                                           dim == 2 &&
@@ -328,28 +328,8 @@ namespace pdfem
             std::ofstream  out(setup.out_dir + "/summary.json");
             IO::JsonWriter json(out);
             json.begin_object();
-            json.value("pdfem_version", PDFEM_VERSION);
-            json.value("scene", setup.name);
-            json.value("input_file", setup.file);
-            json.value("dimension", static_cast<unsigned long>(dim));
-            json.value("ranks",
-                       static_cast<unsigned long>(
-                         Utilities::MPI::n_mpi_processes(comm)));
-            json.value("exit_state", exit_state);
-            json.value("message", message);
-            json.begin_object("problem");
-            json.value("nodes", size.n_nodes);
-            json.value("pd_nodes", size.n_pd_nodes);
-            json.value("interface_nodes", size.n_interface_nodes);
-            json.value("cells", size.n_cells);
-            json.value("pd_cells", size.n_pd_cells);
-            json.value("dofs", size.n_dofs);
-            json.value("bonds", size.n_bonds);
-            json.value("broken_bonds", n_broken_bonds);
-            json.value("decoupled_nodes", size.n_decoupled_nodes);
-            json.value("pd_boundary_faces", size.n_pd_boundary_faces);
-            json.value("matrix_entries_rank0", size.n_matrix_entries);
-            json.end_object();
+            write_summary_header(
+              json, setup, comm, exit_state, message, size, final_size);
             json.value("steps", static_cast<unsigned long>(last.step));
 
             json.begin_object("final");

@@ -60,6 +60,40 @@ namespace pdfem
       } // namespace
 
       template <int dim>
+      void
+      write_summary_header(IO::JsonWriter              &json,
+                           const Setup<dim>            &setup,
+                           MPI_Comm                     comm,
+                           const std::string           &exit_state,
+                           const std::string           &message,
+                           const Coupling::ProblemSize &size,
+                           const Coupling::ProblemSize &final_size)
+      {
+        json.value("pdfem_version", PDFEM_VERSION);
+        json.value("scene", setup.name);
+        json.value("input_file", setup.file);
+        json.value("dimension", static_cast<unsigned long>(dim));
+        json.value("ranks",
+                   static_cast<unsigned long>(
+                     Utilities::MPI::n_mpi_processes(comm)));
+        json.value("exit_state", exit_state);
+        json.value("message", message);
+        json.begin_object("problem");
+        json.value("nodes", size.n_nodes);
+        json.value("pd_nodes", size.n_pd_nodes);
+        json.value("interface_nodes", size.n_interface_nodes);
+        json.value("cells", size.n_cells);
+        json.value("pd_cells", size.n_pd_cells);
+        json.value("dofs", size.n_dofs);
+        json.value("bonds", size.n_bonds);
+        json.value("broken_bonds", final_size.n_broken_bonds);
+        json.value("decoupled_nodes", final_size.n_decoupled_nodes);
+        json.value("pd_boundary_faces", size.n_pd_boundary_faces);
+        json.value("matrix_entries_rank0", size.n_matrix_entries);
+        json.end_object();
+      }
+
+      template <int dim>
       int
       execute(Setup<dim> &setup, const RunOptions &options, MPI_Comm comm)
       {
@@ -366,28 +400,8 @@ namespace pdfem
             std::ofstream  out(out_dir + "/summary.json");
             IO::JsonWriter json(out);
             json.begin_object();
-            json.value("pdfem_version", PDFEM_VERSION);
-            json.value("scene", setup.name);
-            json.value("input_file", setup.file);
-            json.value("dimension", static_cast<unsigned long>(dim));
-            json.value("ranks",
-                       static_cast<unsigned long>(
-                         Utilities::MPI::n_mpi_processes(comm)));
-            json.value("exit_state", exit_state);
-            json.value("message", message);
-            json.begin_object("problem");
-            json.value("nodes", size.n_nodes);
-            json.value("pd_nodes", size.n_pd_nodes);
-            json.value("interface_nodes", size.n_interface_nodes);
-            json.value("cells", size.n_cells);
-            json.value("pd_cells", size.n_pd_cells);
-            json.value("dofs", size.n_dofs);
-            json.value("bonds", size.n_bonds);
-            json.value("broken_bonds", final_size.n_broken_bonds);
-            json.value("decoupled_nodes", final_size.n_decoupled_nodes);
-            json.value("pd_boundary_faces", size.n_pd_boundary_faces);
-            json.value("matrix_entries_rank0", size.n_matrix_entries);
-            json.end_object();
+            write_summary_header(
+              json, setup, comm, exit_state, message, size, final_size);
             json.value("steps", static_cast<unsigned long>(n_steps));
 
             json.begin_object("final");
@@ -521,8 +535,15 @@ namespace pdfem
                  ExitCode::run_failure;
       }
 
-#define INSTANTIATE(dim) \
-  template int execute<dim>(Setup<dim> &, const RunOptions &, MPI_Comm);
+#define INSTANTIATE(dim)                                                  \
+  template int  execute<dim>(Setup<dim> &, const RunOptions &, MPI_Comm); \
+  template void write_summary_header<dim>(IO::JsonWriter &,               \
+                                          const Setup<dim> &,             \
+                                          MPI_Comm,                       \
+                                          const std::string &,            \
+                                          const std::string &,            \
+                                          const Coupling::ProblemSize &,  \
+                                          const Coupling::ProblemSize &);
       PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
     } // namespace internal

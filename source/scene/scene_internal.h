@@ -23,7 +23,8 @@ namespace pdfem
   namespace IO
   {
     struct PDLSMFEMModel;
-  }
+    class JsonWriter;
+  } // namespace IO
 
   namespace Scene
   {
@@ -112,6 +113,19 @@ namespace pdfem
       execute_dynamic(Setup<dim>       &setup,
                       const RunOptions &options,
                       MPI_Comm          comm);
+
+      /// summary.json's opening members: version, scene, input file,
+      /// dimension, ranks, exit state, message and the problem sizes
+      /// (bonds broken and nodes decoupled from @p final_size).
+      template <int dim>
+      void
+      write_summary_header(IO::JsonWriter              &json,
+                           const Setup<dim>            &setup,
+                           MPI_Comm                     comm,
+                           const std::string           &exit_state,
+                           const std::string           &message,
+                           const Coupling::ProblemSize &size,
+                           const Coupling::ProblemSize &final_size);
 
       /// Set up the coupled system, run the driver, write every output.
       template <int dim>
