@@ -94,21 +94,9 @@ namespace pdfem
         // ---- history
         const double             thickness     = system.thickness();
         const auto               reaction_sets = system.reaction_names();
-        std::vector<std::string> columns       = {"step",
-                                                  "time",
-                                                  "load_factor",
-                                                  "newton_iterations",
-                                                  "linear_iterations",
-                                                  "residual",
-                                                  "n_broken_bonds",
-                                                  "max_damage"};
-        for (const auto &set : reaction_sets)
-          for (const auto &c : component_names<dim>())
-            columns.push_back("reaction_" + IO::History::column_name(set) +
-                              "_" + c);
-        if (!setup.reaction_group.empty())
-          for (const auto &c : component_names<dim>())
-            columns.push_back("reaction_RF_" + c);
+        std::vector<std::string> columns =
+          base_history_columns<dim>(reaction_sets,
+                                    !setup.reaction_group.empty());
         for (const char *c : {"time_step",
                               "kinetic_energy",
                               "strain_energy",
@@ -188,9 +176,7 @@ namespace pdfem
               row.push_back(R[c]);
           if (!setup.reaction_group.empty())
             {
-              Tensor<1, dim> R;
-              for (const unsigned int g : setup.reaction_group)
-                R += reactions[g];
+              const auto R = group_reaction(reactions, setup.reaction_group);
               for (unsigned int c = 0; c < dim; ++c)
                 row.push_back(R[c]);
             }
@@ -384,9 +370,8 @@ namespace pdfem
             json.end_object();
             if (!setup.reaction_group.empty())
               {
-                Tensor<1, dim> R;
-                for (const unsigned int g : setup.reaction_group)
-                  R += final_reactions[g];
+                const auto R =
+                  group_reaction(final_reactions, setup.reaction_group);
                 json.begin_object("reaction_RF");
                 for (unsigned int c = 0; c < dim; ++c)
                   json.value(comps[c], R[c]);

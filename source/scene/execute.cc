@@ -60,6 +60,29 @@ namespace pdfem
       } // namespace
 
       template <int dim>
+      std::vector<std::string>
+      base_history_columns(const std::vector<std::string> &reaction_sets,
+                           const bool                      reaction_group)
+      {
+        std::vector<std::string> columns = {"step",
+                                            "time",
+                                            "load_factor",
+                                            "newton_iterations",
+                                            "linear_iterations",
+                                            "residual",
+                                            "n_broken_bonds",
+                                            "max_damage"};
+        for (const auto &set : reaction_sets)
+          for (const auto &c : component_names<dim>())
+            columns.push_back("reaction_" + IO::History::column_name(set) +
+                              "_" + c);
+        if (reaction_group)
+          for (const auto &c : component_names<dim>())
+            columns.push_back("reaction_RF_" + c);
+        return columns;
+      }
+
+      template <int dim>
       void
       write_summary_header(IO::JsonWriter              &json,
                            const Setup<dim>            &setup,
@@ -150,21 +173,9 @@ namespace pdfem
 
         // ---- history
         const auto               reaction_sets = system->reaction_names();
-        std::vector<std::string> columns       = {"step",
-                                                  "time",
-                                                  "load_factor",
-                                                  "newton_iterations",
-                                                  "linear_iterations",
-                                                  "residual",
-                                                  "n_broken_bonds",
-                                                  "max_damage"};
-        for (const auto &set : reaction_sets)
-          for (const auto &c : component_names<dim>())
-            columns.push_back("reaction_" + IO::History::column_name(set) +
-                              "_" + c);
-        if (!setup.reaction_group.empty())
-          for (const auto &c : component_names<dim>())
-            columns.push_back("reaction_RF_" + c);
+        std::vector<std::string> columns =
+          base_history_columns<dim>(reaction_sets,
+                                    !setup.reaction_group.empty());
         if (mcts)
           for (unsigned int k = 0; k < n_tips; ++k)
             {
@@ -187,12 +198,8 @@ namespace pdfem
         IO::History history(out_dir + "/history.csv", columns, root);
 
         // The sum over a group of sets (PDLSM-FEM's RF command).
-        const auto group_reaction = [&]() {
-          Tensor<1, dim> R;
-          const auto     all = system->reactions();
-          for (const unsigned int s : setup.reaction_group)
-            R += all[s];
-          return R;
+        const auto rf = [&]() {
+          return group_reaction(system->reactions(), setup.reaction_group);
         };
 
         // ---- one row per converged step, progress, field output
@@ -231,8 +238,8 @@ namespace pdfem
           if (!setup.reaction_group.empty())
             for (unsigned int c = 0; c < dim; ++c)
               {
-                row.push_back(group_reaction()[c]);
-                peaks.back()[c].update(group_reaction()[c],
+                row.push_back(rf()[c]);
+                peaks.back()[c].update(rf()[c],
                                        record.step,
                                        record.load_factor);
               }
@@ -469,7 +476,7 @@ namespace pdfem
               {
                 json.begin_object("reaction_RF");
                 for (unsigned int c = 0; c < dim; ++c)
-                  json.value(comps[c], group_reaction()[c]);
+                  json.value(comps[c], rf()[c]);
                 json.end_object();
               }
             if (mcts)
@@ -535,14 +542,16 @@ namespace pdfem
                  ExitCode::run_failure;
       }
 
-#define INSTANTIATE(dim)                                                  \
-  template int  execute<dim>(Setup<dim> &, const RunOptions &, MPI_Comm); \
-  template void write_summary_header<dim>(IO::JsonWriter &,               \
-                                          const Setup<dim> &,             \
-                                          MPI_Comm,                       \
-                                          const std::string &,            \
-                                          const std::string &,            \
-                                          const Coupling::ProblemSize &,  \
+#define INSTANTIATE(dim)                                                 \
+  template int execute<dim>(Setup<dim> &, const RunOptions &, MPI_Comm); \
+  template std::vector<std::string> base_history_columns<dim>(           \
+    const std::vector<std::string> &, bool);                             \
+  template void write_summary_header<dim>(IO::JsonWriter &,              \
+                                          const Setup<dim> &,            \
+                                          MPI_Comm,                      \
+                                          const std::string &,           \
+                                          const std::string &,           \
+                                          const Coupling::ProblemSize &, \
                                           const Coupling::ProblemSize &);
       PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

@@ -114,6 +114,27 @@ namespace pdfem
                       const RunOptions &options,
                       MPI_Comm          comm);
 
+      /// history.csv's first columns, the same for every driver: step,
+      /// time, load_factor, newton_iterations, linear_iterations,
+      /// residual, n_broken_bonds, max_damage, reaction_<set>_<c> for
+      /// @p reaction_sets and, with a reaction group, reaction_RF_<c>.
+      template <int dim>
+      std::vector<std::string>
+      base_history_columns(const std::vector<std::string> &reaction_sets,
+                           bool                            reaction_group);
+
+      /// The sum of @p reactions over the sets of @p group (PDLSM-FEM's RF).
+      template <int dim>
+      dealii::Tensor<1, dim>
+      group_reaction(const std::vector<dealii::Tensor<1, dim>> &reactions,
+                     const std::vector<unsigned int>           &group)
+      {
+        dealii::Tensor<1, dim> R;
+        for (const unsigned int s : group)
+          R += reactions[s];
+        return R;
+      }
+
       /// summary.json's opening members: version, scene, input file,
       /// dimension, ranks, exit state, message and the problem sizes
       /// (bonds broken and nodes decoupled from @p final_size).
