@@ -321,62 +321,11 @@ namespace pdfem
             json.begin_object("final");
             json.value("time", last.time);
             json.value("load_factor", last.time / prm.end_time);
-            const auto          comps  = component_names<dim>();
-            const auto          scomps = stress_component_names<dim>();
-            const double        inf = std::numeric_limits<double>::infinity();
-            std::vector<double> umax(dim, -inf), umin(dim, inf),
-              smax(scomps.size(), -inf), smin(scomps.size(), inf);
-            double dmax = 0.;
-            for (unsigned int k = 0; k < results.position.size(); ++k)
-              {
-                for (unsigned int c = 0; c < dim; ++c)
-                  {
-                    umax[c] = std::max(umax[c], results.displacement[k][c]);
-                    umin[c] = std::min(umin[c], results.displacement[k][c]);
-                  }
-                for (unsigned int c = 0; c < scomps.size(); ++c)
-                  {
-                    const double v = stress_component(results.stress[k], c);
-                    smax[c]        = std::max(smax[c], v);
-                    smin[c]        = std::min(smin[c], v);
-                  }
-                dmax = std::max(dmax, results.damage[k]);
-              }
-            json.begin_object("max_displacement");
-            for (unsigned int c = 0; c < dim; ++c)
-              json.value(comps[c], umax[c]);
-            json.end_object();
-            json.begin_object("min_displacement");
-            for (unsigned int c = 0; c < dim; ++c)
-              json.value(comps[c], umin[c]);
-            json.end_object();
-            json.begin_object("max_stress");
-            for (unsigned int c = 0; c < scomps.size(); ++c)
-              json.value(scomps[c], smax[c]);
-            json.end_object();
-            json.begin_object("min_stress");
-            for (unsigned int c = 0; c < scomps.size(); ++c)
-              json.value(scomps[c], smin[c]);
-            json.end_object();
-            json.value("max_damage", dmax);
-            json.begin_object("reaction");
-            for (std::size_t set = 0; set < reaction_sets.size(); ++set)
-              {
-                json.begin_object(reaction_sets[set]);
-                for (unsigned int c = 0; c < dim; ++c)
-                  json.value(comps[c], final_reactions[set][c]);
-                json.end_object();
-              }
-            json.end_object();
-            if (!setup.reaction_group.empty())
-              {
-                const auto R =
-                  group_reaction(final_reactions, setup.reaction_group);
-                json.begin_object("reaction_RF");
-                for (unsigned int c = 0; c < dim; ++c)
-                  json.value(comps[c], R[c]);
-                json.end_object();
-              }
+            write_final_fields(json, results);
+            write_final_reactions(json,
+                                  reaction_sets,
+                                  final_reactions,
+                                  setup.reaction_group);
             json.end_object();
 
             // The dynamic run: step, stability, energy balance, cost.

@@ -84,6 +84,77 @@ namespace pdfem
 
       template <int dim>
       void
+      write_final_fields(IO::JsonWriter                    &json,
+                         const Coupling::NodalResults<dim> &results)
+      {
+        const auto          comps  = component_names<dim>();
+        const auto          scomps = stress_component_names<dim>();
+        const double        inf    = std::numeric_limits<double>::infinity();
+        std::vector<double> umax(dim, -inf), umin(dim, inf),
+          smax(scomps.size(), -inf), smin(scomps.size(), inf);
+        double s1max = -inf, dmax = 0.;
+        for (unsigned int k = 0; k < results.position.size(); ++k)
+          {
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                umax[c] = std::max(umax[c], results.displacement[k][c]);
+                umin[c] = std::min(umin[c], results.displacement[k][c]);
+              }
+            for (unsigned int c = 0; c < scomps.size(); ++c)
+              {
+                const double v = stress_component(results.stress[k], c);
+                smax[c]        = std::max(smax[c], v);
+                smin[c]        = std::min(smin[c], v);
+              }
+            s1max = std::max(s1max, eigenvalues(results.stress[k])[0]);
+            dmax  = std::max(dmax, results.damage[k]);
+          }
+        const auto object = [&](const char                     *name,
+                                const std::vector<std::string> &keys,
+                                const std::vector<double>      &values) {
+          json.begin_object(name);
+          for (unsigned int c = 0; c < keys.size(); ++c)
+            json.value(keys[c], values[c]);
+          json.end_object();
+        };
+        object("max_displacement", comps, umax);
+        object("min_displacement", comps, umin);
+        object("max_stress", scomps, smax);
+        object("min_stress", scomps, smin);
+        json.value("max_principal_stress", s1max);
+        json.value("max_damage", dmax);
+      }
+
+      template <int dim>
+      void
+      write_final_reactions(
+        IO::JsonWriter                            &json,
+        const std::vector<std::string>            &names,
+        const std::vector<dealii::Tensor<1, dim>> &reactions,
+        const std::vector<unsigned int>           &group)
+      {
+        const auto comps = component_names<dim>();
+        json.begin_object("reaction");
+        for (std::size_t s = 0; s < names.size(); ++s)
+          {
+            json.begin_object(names[s]);
+            for (unsigned int c = 0; c < dim; ++c)
+              json.value(comps[c], reactions[s][c]);
+            json.end_object();
+          }
+        json.end_object();
+        if (!group.empty())
+          {
+            const auto R = group_reaction(reactions, group);
+            json.begin_object("reaction_RF");
+            for (unsigned int c = 0; c < dim; ++c)
+              json.value(comps[c], R[c]);
+            json.end_object();
+          }
+      }
+
+      template <int dim>
+      void
       write_summary_header(IO::JsonWriter              &json,
                            const Setup<dim>            &setup,
                            MPI_Comm                     comm,
@@ -415,70 +486,16 @@ namespace pdfem
             json.value("load_factor", last_load);
             json.value("pd_cells", final_size.n_pd_cells);
             json.value("pd_nodes", final_size.n_pd_nodes);
-            const auto          comps  = component_names<dim>();
-            const auto          scomps = stress_component_names<dim>();
-            const double        inf = std::numeric_limits<double>::infinity();
-            std::vector<double> umax(dim, -inf), umin(dim, inf),
-              smax(scomps.size(), -inf), smin(scomps.size(), inf);
-            double s1max = -inf, dmax = 0.;
-            for (unsigned int k = 0; k < results->position.size(); ++k)
-              {
-                for (unsigned int c = 0; c < dim; ++c)
-                  {
-                    umax[c] = std::max(umax[c], results->displacement[k][c]);
-                    umin[c] = std::min(umin[c], results->displacement[k][c]);
-                  }
-                for (unsigned int c = 0; c < scomps.size(); ++c)
-                  {
-                    const double v = stress_component(results->stress[k], c);
-                    smax[c]        = std::max(smax[c], v);
-                    smin[c]        = std::min(smin[c], v);
-                  }
-                s1max = std::max(s1max, eigenvalues(results->stress[k])[0]);
-                dmax  = std::max(dmax, results->damage[k]);
-              }
-            const std::pair<const char *, const std::vector<double> *>
-              fields[] = {{"max_displacement", &umax},
-                          {"min_displacement", &umin}};
-            for (const auto &[name, values] : fields)
-              {
-                json.begin_object(name);
-                for (unsigned int c = 0; c < dim; ++c)
-                  json.value(comps[c], (*values)[c]);
-                json.end_object();
-              }
-            json.begin_object("max_stress");
-            for (unsigned int c = 0; c < scomps.size(); ++c)
-              json.value(scomps[c], smax[c]);
-            json.end_object();
-            json.begin_object("min_stress");
-            for (unsigned int c = 0; c < scomps.size(); ++c)
-              json.value(scomps[c], smin[c]);
-            json.end_object();
-            json.value("max_principal_stress", s1max);
-            json.value("max_damage", dmax);
+            write_final_fields(json, *results);
             if (fc2)
               json.value("max_bond_principal_stress",
                          assessment.max_driving_value);
             if (stretch)
               json.value("max_stretch_ratio", assessment.max_driving_value);
-            json.begin_object("reaction");
-            const auto reactions = system->reactions();
-            for (std::size_t s = 0; s < reaction_sets.size(); ++s)
-              {
-                json.begin_object(reaction_sets[s]);
-                for (unsigned int c = 0; c < dim; ++c)
-                  json.value(comps[c], reactions[s][c]);
-                json.end_object();
-              }
-            json.end_object();
-            if (!setup.reaction_group.empty())
-              {
-                json.begin_object("reaction_RF");
-                for (unsigned int c = 0; c < dim; ++c)
-                  json.value(comps[c], rf()[c]);
-                json.end_object();
-              }
+            write_final_reactions(json,
+                                  reaction_sets,
+                                  system->reactions(),
+                                  setup.reaction_group);
             if (mcts)
               {
                 json.begin_object("crack_tips");
@@ -500,6 +517,7 @@ namespace pdfem
             json.end_object();
 
             // The largest reaction of each set (and of RF) over the run.
+            const auto comps = component_names<dim>();
             json.begin_object("peak_reaction");
             for (std::size_t s = 0; s < peaks.size(); ++s)
               {

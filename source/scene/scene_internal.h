@@ -135,6 +135,23 @@ namespace pdfem
         return R;
       }
 
+      /// summary.json's final extremes of the nodal fields: max and min
+      /// displacement and stress per component, max_principal_stress and
+      /// max_damage.
+      template <int dim>
+      void
+      write_final_fields(IO::JsonWriter                    &json,
+                         const Coupling::NodalResults<dim> &results);
+
+      /// summary.json's "reaction" per set and, with a group, "reaction_RF".
+      template <int dim>
+      void
+      write_final_reactions(
+        IO::JsonWriter                            &json,
+        const std::vector<std::string>            &names,
+        const std::vector<dealii::Tensor<1, dim>> &reactions,
+        const std::vector<unsigned int>           &group);
+
       /// summary.json's opening members: version, scene, input file,
       /// dimension, ranks, exit state, message and the problem sizes
       /// (bonds broken and nodes decoupled from @p final_size).
