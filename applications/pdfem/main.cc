@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // pdfem: run a scene file.  pdfem scene.prm [--output DIR] [--quiet]
 #include <pdfem/base/config.h>
+#include <pdfem/base/mpi_startup.h>
 #include <pdfem/io/parameters.h>
 #include <pdfem/scene/scene.h>
 
@@ -44,6 +45,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  pdfem::prepare_mpi_singleton_startup();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool                               root =
     dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
