@@ -59,6 +59,7 @@ namespace pdfem
           s.update_decoupled();
           s.update_held();
           s.block_inverse.clear(); // rebuilt by the next solve
+          s.auxiliary_stale = s.matrix_free;
         }
       return n;
     }
@@ -90,6 +91,7 @@ namespace pdfem
           s.update_decoupled();
           s.update_held();
           s.block_inverse.clear();
+          s.auxiliary_stale = s.matrix_free;
         }
       return n;
     }

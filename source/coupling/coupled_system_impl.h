@@ -63,6 +63,14 @@ namespace pdfem
       /// "amg fe" the auxiliary matrix: FE stiffness of every cell.
       void
       assemble_fe_matrix();
+      /// The "amg fe" preconditioner's matrix: the FE stiffness of every
+      /// cell, cells cut by broken bonds weakened (cut_cell_stiffness).
+      void
+      assemble_auxiliary();
+      /// Per active cell: broken bonds split its vertices into two or more
+      /// groups joined by intact bonds (a crack runs through it).
+      std::vector<bool>
+      cells_cut_by_broken_bonds() const;
       /**
        * Add the PD internal forces of the owned families for the
        * displacement @p x (ghosted: owned and relevant entries) to the owned
@@ -189,10 +197,18 @@ namespace pdfem
       std::vector<unsigned int>           held_lid;      // owned-local index
       std::vector<double>                 held_value;    // its diagonal entry
       /// gmres with "amg fe": no assembled tangent, products on the fly.
-      bool                                          matrix_free = false;
-      dealii::TrilinosWrappers::SparseMatrix        fe_matrix; // FE cells, full
-      dealii::TrilinosWrappers::SparseMatrix        matrix; // assembled tangent
-      dealii::TrilinosWrappers::SparseMatrix        auxiliary; // "amg fe" only
+      bool                                   matrix_free = false;
+      dealii::TrilinosWrappers::SparseMatrix fe_matrix; // FE cells, full
+      dealii::TrilinosWrappers::SparseMatrix matrix;    // assembled tangent
+      dealii::TrilinosWrappers::SparseMatrix auxiliary; // "amg fe" only
+      /// Bonds broke since the auxiliary matrix was assembled.
+      bool auxiliary_stale = false;
+      /// The cut cells and the number of held DoFs the auxiliary matrix was
+      /// assembled with (empty: not assembled yet).
+      std::vector<bool> auxiliary_cut;
+      std::size_t       auxiliary_n_held = 0;
+      /// The factor of a cut cell's stiffness in the auxiliary matrix.
+      double                                        cut_cell_stiffness = 1e-3;
       mutable dealii::TrilinosWrappers::MPI::Vector x_ghosted, x_masked;
       dealii::TrilinosWrappers::MPI::Vector         f_int, f_ext, u_ghosted;
       Solvers::LinearSolver                         solver;

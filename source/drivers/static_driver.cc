@@ -66,7 +66,13 @@ namespace pdfem
               throw RunFailure("diverged", s.str());
             }
           start = clock::now();
-          record.linear_iterations += system.solve_linear(du, r);
+          // The linear solve need not go below what this loop accepts:
+          // a tenth of the residual tolerance. After a crack step at held
+          // load the residual is already small against the force scale,
+          // and solving it to the solver's relative tolerance of |r|
+          // cost a third of GMRES's iterations on the peer's plateCrack.
+          record.linear_iterations += system.solve_linear_within(
+            du, r, 0.1 * settings.residual_tolerance * scale);
           time_spent.solve += seconds_since(start);
           u += du;
           ++record.newton_iterations;

@@ -214,6 +214,10 @@ namespace pdfem
       force_scale() const override;
       unsigned int
       solve_linear(Vector &du, const Vector &r) override;
+      unsigned int
+      solve_linear_within(Vector       &du,
+                          const Vector &r,
+                          double        allowed_residual) override;
 
       /// @name Dynamics (Drivers::DynamicSystemInterface)
       /// @{

@@ -59,6 +59,18 @@ namespace pdfem
       /// Solve K du = r with the last assembled K; returns the iterations.
       virtual unsigned int
       solve_linear(Vector &du, const Vector &r) = 0;
+
+      /**
+       * The same, where an iterative solver may stop once |r - K du| is
+       * below @p allowed_residual, even before its own relative tolerance:
+       * a Newton step needs no more. By default the same as solve_linear().
+       */
+      virtual unsigned int
+      solve_linear_within(Vector &du, const Vector &r, double allowed_residual)
+      {
+        (void)allowed_residual;
+        return solve_linear(du, r);
+      }
     };
   } // namespace Drivers
 } // namespace pdfem

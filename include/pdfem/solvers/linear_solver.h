@@ -47,11 +47,13 @@ namespace pdfem
       set_constant_modes(const std::vector<std::vector<bool>> &modes);
 
       /// Solve with the assembled @p K: direct, or GMRES with ML AMG or ILU
-      /// of K. Returns the number of iterations (1 for direct).
+      /// of K. Returns the number of iterations (1 for direct). GMRES stops
+      /// at |b - K x| <= max(tolerance |b|, @p allowed_residual).
       unsigned int
       solve(const dealii::TrilinosWrappers::SparseMatrix &K,
             dealii::TrilinosWrappers::MPI::Vector        &x,
-            const dealii::TrilinosWrappers::MPI::Vector  &b);
+            const dealii::TrilinosWrappers::MPI::Vector  &b,
+            double allowed_residual = 0.);
 
       /**
        * Solve with GMRES (right preconditioning, so the tolerance is on the
@@ -59,8 +61,10 @@ namespace pdfem
        * preconditioned by ML AMG built from @p auxiliary and, if
        * @p block_jacobi is given (w = D^-1 t with D the node blocks of K's
        * diagonal), one correction z += D^-1 (r - K z) after the AMG.
-       * The AMG hierarchy is built once and reused while @p auxiliary stays
-       * the same matrix (it never changes while only bonds break).
+       * The AMG hierarchy is reused while @p auxiliary stays the same
+       * matrix; after preconditioner_matrix_changed() it is rebuilt once
+       * GMRES needs 10 % more iterations than right after the last build.
+       * GMRES stops at |b - K x| <= max(tolerance |b|, @p allowed_residual).
        */
       using Operator =
         std::function<void(dealii::TrilinosWrappers::MPI::Vector &,
@@ -70,7 +74,16 @@ namespace pdfem
             dealii::TrilinosWrappers::MPI::Vector        &x,
             const dealii::TrilinosWrappers::MPI::Vector  &b,
             const dealii::TrilinosWrappers::SparseMatrix &auxiliary,
-            const Operator                               &block_jacobi = {});
+            const Operator                               &block_jacobi = {},
+            double allowed_residual                                    = 0.);
+
+      /// The matrix the AMG was built from has new entries: the next solve
+      /// rebuilds the hierarchy.
+      void
+      preconditioner_matrix_changed()
+      {
+        amg_stale = true;
+      }
 
     private:
       Parameters::LinearSolver                                   settings;
@@ -79,6 +92,7 @@ namespace pdfem
       const dealii::TrilinosWrappers::SparseMatrix *amg_matrix = nullptr;
       bool                                          amg_stale  = false;
       unsigned int                                  amg_fresh_iterations = 0;
+      unsigned int                                  last_iterations      = 0;
     };
   } // namespace Solvers
 } // namespace pdfem
