@@ -2,18 +2,22 @@
 #include <pdfem/base/config.h>
 #include <pdfem/io/field_output.h>
 
+#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
 
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/hp/mapping_collection.h>
-#include <deal.II/lac/vector.h>
-#include <deal.II/numerics/data_out.h>
+#include <deal.II/grid/reference_cell.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 
 namespace pdfem
 {
@@ -33,48 +37,220 @@ namespace pdfem
     {}
 
     template <int dim>
+    FieldOutput<dim>::~FieldOutput()
+    {
+      try
+        {
+          finish();
+        }
+      catch (const std::exception &e)
+        {
+          std::cerr << "pdfem: field output failed: " << e.what() << std::endl;
+        }
+    }
+
+    template <int dim>
+    void
+    FieldOutput<dim>::finish()
+    {
+      if (pending.valid())
+        pending.get();
+    }
+
+    namespace
+    {
+      /// One named array of a VTU piece: Float32 values, @p components per
+      /// point or cell.
+      struct Array
+      {
+        std::string        name;
+        unsigned int       components = 1;
+        std::vector<float> values;
+      };
+
+      /// The piece of one rank, everything a VTU file holds.
+      struct Piece
+      {
+        std::vector<float>        points; // 3 per point
+        std::vector<std::int32_t> connectivity, offsets;
+        std::vector<std::uint8_t> types;
+        std::vector<Array>        point_data, cell_data;
+      };
+
+      /// Base64 of a 64-bit byte count followed by the bytes (VTK XML
+      /// "binary" inline format, header_type UInt64, uncompressed).
+      template <typename T>
+      std::string
+      encode(const std::vector<T> &data)
+      {
+        const std::uint64_t        n = data.size() * sizeof(T);
+        std::vector<unsigned char> bytes(sizeof(n) + n);
+        std::memcpy(bytes.data(), &n, sizeof(n));
+        if (n > 0)
+          std::memcpy(bytes.data() + sizeof(n), data.data(), n);
+        return Utilities::encode_base64(bytes);
+      }
+
+      void
+      write_array(std::ostream      &out,
+                  const std::string &type,
+                  const std::string &name,
+                  unsigned int       components,
+                  const std::string &encoded)
+      {
+        out << "        <DataArray type=\"" << type << "\"";
+        if (!name.empty())
+          out << " Name=\"" << name << "\"";
+        if (components > 1)
+          out << " NumberOfComponents=\"" << components << "\"";
+        out << " format=\"binary\">\n" << encoded << "\n        </DataArray>\n";
+      }
+
+      void
+      write_piece(const std::string &file, const Piece &piece)
+      {
+        std::ofstream out(file);
+        out << "<?xml version=\"1.0\"?>\n"
+               "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+               "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+               "  <UnstructuredGrid>\n"
+            << "    <Piece NumberOfPoints=\"" << piece.points.size() / 3
+            << "\" NumberOfCells=\"" << piece.types.size() << "\">\n"
+            << "      <PointData>\n";
+        for (const Array &a : piece.point_data)
+          write_array(out, "Float32", a.name, a.components, encode(a.values));
+        out << "      </PointData>\n      <CellData>\n";
+        for (const Array &a : piece.cell_data)
+          write_array(out, "Float32", a.name, a.components, encode(a.values));
+        out << "      </CellData>\n      <Points>\n";
+        write_array(out, "Float32", "", 3, encode(piece.points));
+        out << "      </Points>\n      <Cells>\n";
+        write_array(
+          out, "Int32", "connectivity", 1, encode(piece.connectivity));
+        write_array(out, "Int32", "offsets", 1, encode(piece.offsets));
+        write_array(out, "UInt8", "types", 1, encode(piece.types));
+        out << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
+               "</VTKFile>\n";
+        out.close();
+        if (!out)
+          throw std::runtime_error("cannot write " + file);
+      }
+
+      void
+      write_record(const std::string              &file,
+                   const Piece                    &piece,
+                   const std::vector<std::string> &sources)
+      {
+        std::ofstream out(file);
+        out << "<?xml version=\"1.0\"?>\n"
+               "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" "
+               "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+               "  <PUnstructuredGrid GhostLevel=\"0\">\n    <PPointData>\n";
+        for (const Array &a : piece.point_data)
+          out << "      <PDataArray type=\"Float32\" Name=\"" << a.name
+              << "\" NumberOfComponents=\"" << a.components << "\"/>\n";
+        out << "    </PPointData>\n    <PCellData>\n";
+        for (const Array &a : piece.cell_data)
+          out << "      <PDataArray type=\"Float32\" Name=\"" << a.name
+              << "\"/>\n";
+        out << "    </PCellData>\n    <PPoints>\n      <PDataArray "
+               "type=\"Float32\" NumberOfComponents=\"3\"/>\n    </PPoints>\n";
+        for (const std::string &source : sources)
+          out << "    <Piece Source=\"" << source << "\"/>\n";
+        out << "  </PUnstructuredGrid>\n</VTKFile>\n";
+        if (!out)
+          throw std::runtime_error("cannot write " + file);
+      }
+
+      /// VTK's vertex order and cell type for a deal.II cell.
+      template <int dim>
+      std::pair<std::vector<unsigned int>, std::uint8_t>
+      vtk_cell(const ReferenceCell &reference)
+      {
+        if (reference == ReferenceCells::Quadrilateral)
+          return {{0, 1, 3, 2}, 9};
+        if (reference == ReferenceCells::Hexahedron)
+          return {{0, 1, 3, 2, 4, 5, 7, 6}, 12};
+        if (reference == ReferenceCells::Triangle)
+          return {{0, 1, 2}, 5};
+        if (reference == ReferenceCells::Tetrahedron)
+          return {{0, 1, 2, 3}, 10};
+        if (reference == ReferenceCells::Wedge)
+          return {{0, 1, 2, 3, 4, 5}, 13};
+        return {{0, 1, 2, 3, 4}, 14}; // pyramid
+      }
+    } // namespace
+
+    template <int dim>
     void
     FieldOutput<dim>::write(const Coupling::CoupledSystem<dim> &system,
                             const Coupling::NodalResults<dim>  &results,
                             const double                        time)
     {
-      const DoFHandler<dim> &vector_dofs = system.dof_handler();
-      const DoFHandler<dim> &node_dofs   = system.node_dof_handler();
-      const auto            &node_of     = system.node_of_scalar_dof();
-      const unsigned int     n_scalar    = node_dofs.n_dofs();
-
-      // Displacement on the vector DoFHandler, node by node.
-      Vector<double> displacement(vector_dofs.n_dofs());
-      auto           scalar_cell = node_dofs.begin_active();
+      // The locally owned cells and the nodes they use, each node once
+      // (one point per node: PD and FE share the mesh vertices).
+      const DoFHandler<dim>    &node_dofs = system.node_dof_handler();
+      const auto               &node_of   = system.node_of_scalar_dof();
+      Piece                     piece;
+      std::vector<int>          point_of(results.position.size(), -1);
+      std::vector<unsigned int> point_node;
       std::vector<types::global_dof_index> scalar_local;
-      for (const auto &cell : vector_dofs.active_cell_iterators())
-        {
-          scalar_local.resize(scalar_cell->get_fe().n_dofs_per_cell());
-          scalar_cell->get_dof_indices(scalar_local);
-          for (const unsigned int v : cell->vertex_indices())
-            for (unsigned int c = 0; c < dim; ++c)
-              displacement[cell->vertex_dof_index(
-                v, c, cell->active_fe_index())] =
-                results.displacement[node_of[scalar_local[v]]][c];
-          ++scalar_cell;
-        }
+      Array region{"pd_region", 1, {}}, material{"material_id", 1, {}},
+        rank{"rank", 1, {}};
+      for (const auto &cell : node_dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            scalar_local.resize(cell->get_fe().n_dofs_per_cell());
+            cell->get_dof_indices(scalar_local);
+            const auto [order, type] = vtk_cell<dim>(cell->reference_cell());
+            for (const unsigned int v : order)
+              {
+                const unsigned int k = node_of[scalar_local[v]];
+                if (point_of[k] < 0)
+                  {
+                    point_of[k] = point_node.size();
+                    point_node.push_back(k);
+                  }
+                piece.connectivity.push_back(point_of[k]);
+              }
+            piece.offsets.push_back(piece.connectivity.size());
+            piece.types.push_back(type);
+            region.values.push_back(
+              system.cell_is_pd()[cell->active_cell_index()] ? 1.f : 0.f);
+            material.values.push_back(cell->material_id());
+            rank.values.push_back(cell->subdomain_id());
+          }
+      piece.cell_data = {region, material, rank};
 
-      const auto names = Coupling::stress_component_names<dim>();
-      std::vector<Vector<double>> stress(names.size(),
-                                         Vector<double>(n_scalar));
-      Vector<double> sigma_zz(n_scalar), s1(n_scalar), s_min(n_scalar),
-        von_mises(n_scalar), damage(n_scalar), kind(n_scalar);
-      for (unsigned int i = 0; i < n_scalar; ++i)
+      const auto         names = Coupling::stress_component_names<dim>();
+      const unsigned int n     = point_node.size();
+      Array displacement{"displacement", 3, std::vector<float>(3 * n, 0.f)};
+      std::vector<Array> stress;
+      for (const auto &name : names)
+        stress.push_back({"stress_" + name, 1, std::vector<float>(n)});
+      Array sigma_zz{"stress_zz", 1, std::vector<float>(n)},
+        s1{"max_principal_stress", 1, std::vector<float>(n)},
+        s_min{"min_principal_stress", 1, std::vector<float>(n)},
+        von_mises{"von_mises_stress", 1, std::vector<float>(n)},
+        damage{"damage", 1, std::vector<float>(n)},
+        kind{"node_kind", 1, std::vector<float>(n)};
+      piece.points.assign(3 * n, 0.f);
+      for (unsigned int i = 0; i < n; ++i)
         {
-          const unsigned int             k     = node_of[i];
+          const unsigned int             k     = point_node[i];
           const SymmetricTensor<2, dim> &sigma = results.stress[k];
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              piece.points[3 * i + d]        = results.position[k][d];
+              displacement.values[3 * i + d] = results.displacement[k][d];
+            }
           for (unsigned int c = 0; c < names.size(); ++c)
-            stress[c][i] = stress_component(sigma, c);
+            stress[c].values[i] = stress_component(sigma, c);
           const auto ev    = eigenvalues(sigma);
-          s1[i]            = ev[0];
-          s_min[i]         = ev[dim - 1];
+          s1.values[i]     = ev[0];
+          s_min.values[i]  = ev[dim - 1];
           const double szz = dim == 2 && plane_strain ? nu * trace(sigma) : 0.;
-          sigma_zz[i]      = szz;
+          sigma_zz.values[i] = szz;
           // von Mises from the full 3x3 stress.
           SymmetricTensor<2, 3> s3;
           for (unsigned int a = 0; a < dim; ++a)
@@ -82,57 +258,37 @@ namespace pdfem
               s3[a][b] = sigma[a][b];
           if (dim == 2)
             s3[2][2] = szz;
-          von_mises[i] = std::sqrt(1.5) * deviator(s3).norm();
-          damage[i]    = results.damage[k];
-          kind[i]      = results.kind[k];
+          von_mises.values[i] = std::sqrt(1.5) * deviator(s3).norm();
+          damage.values[i]    = results.damage[k];
+          kind.values[i]      = results.kind[k];
         }
-
-      const auto   &tria = vector_dofs.get_triangulation();
-      Vector<float> region(tria.n_active_cells()), material(region.size()),
-        rank(region.size());
-      for (const auto &cell : tria.active_cell_iterators())
-        {
-          region[cell->active_cell_index()] =
-            system.cell_is_pd()[cell->active_cell_index()] ? 1.f : 0.f;
-          material[cell->active_cell_index()] = cell->material_id();
-          rank[cell->active_cell_index()]     = cell->subdomain_id();
-        }
-
-      DataOut<dim> data_out;
-      data_out.add_data_vector(
-        vector_dofs,
-        displacement,
-        std::vector<std::string>(dim, "displacement"),
-        std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-          dim, DataComponentInterpretation::component_is_part_of_vector));
-      for (unsigned int c = 0; c < names.size(); ++c)
-        data_out.add_data_vector(node_dofs, stress[c], "stress_" + names[c]);
+      piece.point_data.push_back(std::move(displacement));
+      for (auto &a : stress)
+        piece.point_data.push_back(std::move(a));
       if (dim == 2 && plane_strain)
-        data_out.add_data_vector(node_dofs, sigma_zz, "stress_zz");
-      data_out.add_data_vector(node_dofs, s1, "max_principal_stress");
-      data_out.add_data_vector(node_dofs, s_min, "min_principal_stress");
-      data_out.add_data_vector(node_dofs, von_mises, "von_mises_stress");
-      data_out.add_data_vector(node_dofs, damage, "damage");
-      data_out.add_data_vector(node_dofs, kind, "node_kind");
-      data_out.add_data_vector(region,
-                               "pd_region",
-                               DataOut<dim>::type_cell_data);
-      data_out.add_data_vector(material,
-                               "material_id",
-                               DataOut<dim>::type_cell_data);
-      data_out.add_data_vector(rank, "rank", DataOut<dim>::type_cell_data);
-      data_out.build_patches(system.mapping(), 1);
-      // zlib at its fastest: the default (best compression) took 1.9 s of
-      // the 3D box's 12 s for a file 10-20 % smaller.
-      DataOutBase::VtkFlags flags;
-      flags.compression_level = DataOutBase::VtkFlags::best_speed;
-      data_out.set_flags(flags);
+        piece.point_data.push_back(std::move(sigma_zz));
+      for (Array *a : {&s1, &s_min, &von_mises, &damage, &kind})
+        piece.point_data.push_back(std::move(*a));
 
-      const MPI_Comm    comm = vector_dofs.get_communicator();
-      const std::string pvtu = data_out.write_vtu_with_pvtu_record(
-        directory + "/", "solution", counter++, comm, 5);
+      // solution_NNNNN.R.vtu per rank R, solution_NNNNN.pvtu by rank 0.
+      const MPI_Comm     comm    = node_dofs.get_communicator();
+      const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
+      const std::string  base =
+        "solution_" + Utilities::int_to_string(counter++, 5);
+      std::vector<std::string> sources;
+      for (unsigned int r = 0; r < Utilities::MPI::n_mpi_processes(comm); ++r)
+        sources.push_back(base + "." + Utilities::int_to_string(r) + ".vtu");
+      const std::string pvtu = base + ".pvtu";
+      finish();
+      if (my_rank == 0)
+        write_record(directory + "/" + pvtu, piece, sources);
+      pending = std::async(std::launch::async,
+                           [piece = std::move(piece),
+                            file  = directory + "/" + sources[my_rank]]() {
+                             write_piece(file, piece);
+                           });
       records.emplace_back(time, pvtu);
-      if (Utilities::MPI::this_mpi_process(comm) == 0)
+      if (my_rank == 0)
         {
           std::ofstream pvd(directory + "/solution.pvd");
           DataOutBase::write_pvd_record(pvd, records);

@@ -297,7 +297,10 @@ namespace pdfem
                                             !settings.material.plane_stress,
                                           settings.material.poissons_ratio);
         if (setup.write_vtu)
-          field_output.write(system, results, last.time);
+          {
+            field_output.write(system, results, last.time);
+            field_output.finish();
+          }
         if (setup.write_nodes_csv && root)
           IO::FieldOutput<dim>::write_nodes_csv(setup.out_dir + "/nodes.csv",
                                                 results);

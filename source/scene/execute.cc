@@ -457,6 +457,7 @@ namespace pdfem
         results = std::make_unique<Coupling::NodalResults<dim>>(
           system->nodal_results(u));
         write_fields(n_steps);
+        field_output.finish();
         if (setup.write_nodes_csv && root)
           IO::FieldOutput<dim>::write_nodes_csv(out_dir + "/nodes.csv",
                                                 *results);
