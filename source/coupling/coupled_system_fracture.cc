@@ -23,30 +23,45 @@ namespace pdfem
       unsigned long n = 0;
       if (!cracks.empty())
         {
-          // A bond can only meet a crack if its owner is within a horizon
-          // of the crack's bounding box.
-          Point<dim> lo = cracks[0].points[0], hi = lo;
+          // A bond can only meet a crack if its owner is within two horizons
+          // of the crack's bounding box; each owner tests only those cracks
+          // (one box around all new segments spanned the whole plate once
+          // two tips grew apart, and every bond was tested).
+          std::vector<std::pair<Point<dim>, Point<dim>>> boxes;
           for (const auto &crack : cracks)
-            for (const auto &p : crack.points)
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  lo[d] = std::min(lo[d], p[d]);
-                  hi[d] = std::max(hi[d], p[d]);
-                }
-          PD::Families &f = s.families;
+            {
+              Point<dim> lo = crack.points[0], hi = lo;
+              for (const auto &p : crack.points)
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    lo[d] = std::min(lo[d], p[d]);
+                    hi[d] = std::max(hi[d], p[d]);
+                  }
+              boxes.emplace_back(lo, hi);
+            }
+          PD::Families                 &f = s.families;
+          std::vector<Mesh::Crack<dim>> near;
           for (std::size_t o = 0; o < f.owners.size(); ++o)
             {
-              const unsigned int k     = f.owners[o];
-              const double       reach = 2. * s.horizon[k];
-              bool               near  = true;
-              for (unsigned int d = 0; d < dim; ++d)
-                near = near && s.x[k][d] >= lo[d] - reach &&
-                       s.x[k][d] <= hi[d] + reach;
-              if (!near || s.no_fail[k])
+              const unsigned int k = f.owners[o];
+              if (s.no_fail[k])
+                continue;
+              const double reach = 2. * s.horizon[k];
+              near.clear();
+              for (std::size_t c = 0; c < cracks.size(); ++c)
+                {
+                  bool inside = true;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    inside = inside && s.x[k][d] >= boxes[c].first[d] - reach &&
+                             s.x[k][d] <= boxes[c].second[d] + reach;
+                  if (inside)
+                    near.push_back(cracks[c]);
+                }
+              if (near.empty())
                 continue;
               for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
                 if (f.intact[b] && !s.no_fail[f.members[b]] &&
-                    Mesh::cut_by_any(cracks, s.x[k], s.x[f.members[b]]))
+                    Mesh::cut_by_any(near, s.x[k], s.x[f.members[b]]))
                   {
                     f.intact[b] = 0;
                     ++n;
