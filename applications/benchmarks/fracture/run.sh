@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Fracture benchmark: accuracy of the stress-intensity factors and cost of crack growth.
 #
-#   1. inclined central crack in a large plate (specs/004 §6.1), beta = 0..90 degrees, on the
+#   1. inclined central crack in a large plate (specs/004 §6.1), beta = 0..90 degrees, annuli
+#      4-10, 5-12 and 6-14 element sizes, on the
 #      paper's mesh (39 x 39 PD cells) and on a finer one (79 x 79): K_I, K_II against
 #      sigma sqrt(pi a) cos^2(beta), sigma sqrt(pi a) cos(beta) sin(beta) -> sif_inclined.csv;
 #   2. centre and edge cracks in a strip against the handbook, and FE models with a real slit
@@ -14,7 +15,7 @@
 #      -> growth_adaptive.csv.
 # Writes CSV and PNG files into doc/benchmarks/ (PNG only when pdfem-plot is built).
 #
-# usage: applications/benchmarks/fracture/run.sh [BUILD_DIR] [OUT_DIR]
+# usage: [SECTIONS=1234] applications/benchmarks/fracture/run.sh [BUILD_DIR] [OUT_DIR]
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../../.." && pwd)
@@ -28,31 +29,39 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$out"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+sections=${SECTIONS:-1234} # e.g. SECTIONS=3 runs only the peer inputs
 
 # ---- 1. inclined crack
+if [[ $sections == *1* ]]; then
 csv="$out/fracture_sif_inclined.csv"
-echo "mesh,beta_deg,tip,K_I,K_II,K_I_exact,K_II_exact,K_I_error_of_K0,K_II_error_of_K0" > "$csv"
+echo "mesh,annulus,beta_deg,tip,K_I,K_II,K_I_exact,K_II_exact,K_I_error_of_K0,K_II_error_of_K0" > "$csv"
 for n in 39 79; do
   sed "s/^n  = 39;/n  = $n;/" "$root/meshes/inclined_crack.geo" > "$work/inclined_$n.geo"
-  for beta in 0 15 30 45 60 75 90; do
-    crack=$(awk -v b="$beta" 'BEGIN { r = b * atan2(0, -1) / 180; c = 0.02 * cos(r); s = 0.02 * sin(r);
-                                      printf "(%.17g, %.17g) -- (%.17g, %.17g)", -c, -s, c, s }')
-    dir="$work/inclined_${n}_$beta"
-    "$pdfem" "$root/applications/examples/inclined_crack/inclined_crack.prm" --quiet --output "$dir" \
-      --set "Mesh/Input file=$work/inclined_$n.geo" --set "Peridynamics/Pre-existing cracks=$crack" \
-      --set "Output/Write vtu=false"
-    for tip in tip0 tip1; do
-      KI=$("$get" get "$dir/summary.json" final.crack_tips.$tip.K_I)
-      KII=$("$get" get "$dir/summary.json" final.crack_tips.$tip.K_II)
-      awk -v n="$n" -v b="$beta" -v t="$tip" -v KI="$KI" -v KII="$KII" 'BEGIN {
-        r = b * atan2(0, -1) / 180; K0 = 70e6 * sqrt(atan2(0, -1) * 0.02);
-        eI = K0 * cos(r)^2; eII = K0 * cos(r) * sin(r);
-        printf "%s,%s,%s,%.6e,%.6e,%.6e,%.6e,%.5f,%.5f\n", n, b, t, KI, KII, eI, eII, (KI - eI) / K0, (KII - eII) / K0 }' >> "$csv"
+  for annulus in "4 10" "5 12" "6 14"; do
+    read -r r_in r_out <<< "$annulus"
+    for beta in 0 15 30 45 60 75 90; do
+      crack=$(awk -v b="$beta" 'BEGIN { r = b * atan2(0, -1) / 180; c = 0.02 * cos(r); s = 0.02 * sin(r);
+                                        printf "(%.17g, %.17g) -- (%.17g, %.17g)", -c, -s, c, s }')
+      dir="$work/inclined_${n}_${r_in}_$beta"
+      "$pdfem" "$root/applications/examples/inclined_crack/inclined_crack.prm" --quiet --output "$dir" \
+        --set "Mesh/Input file=$work/inclined_$n.geo" --set "Peridynamics/Pre-existing cracks=$crack" \
+        --set "Output/Write vtu=false" --set "Fracture/Domain inner radius=$r_in" \
+        --set "Fracture/Domain outer radius=$r_out"
+      for tip in tip0 tip1; do
+        KI=$("$get" get "$dir/summary.json" final.crack_tips.$tip.K_I)
+        KII=$("$get" get "$dir/summary.json" final.crack_tips.$tip.K_II)
+        awk -v n="$n" -v a="$r_in-$r_out" -v b="$beta" -v t="$tip" -v KI="$KI" -v KII="$KII" 'BEGIN {
+          r = b * atan2(0, -1) / 180; K0 = 70e6 * sqrt(atan2(0, -1) * 0.02);
+          eI = K0 * cos(r)^2; eII = K0 * cos(r) * sin(r);
+          printf "%s,%s,%s,%s,%.6e,%.6e,%.6e,%.6e,%.5f,%.5f\n", n, a, b, t, KI, KII, eI, eII, (KI - eI) / K0, (KII - eII) / K0 }' >> "$csv"
+      done
     done
   done
 done
+fi
 
 # ---- 2. handbook strips and slit references
+if [[ $sections == *2* ]]; then
 csv="$out/fracture_sif_references.csv"
 echo "case,model,dofs,K_I,reference,relative_error" > "$csv"
 strip() { # name scene reference [--set ...]
@@ -86,7 +95,10 @@ if [ -d "$peer" ]; then
   strip "plateCrack:pdlsm-fem (peer mesh)" "$root/tests/scenes/peer_plate_crack_static.in" 3.7329e6
 fi
 
+fi
+
 # ---- 3. the peer's quasi-static inputs
+if [[ $sections == *3* ]]; then
 if [ -d "$peer" ]; then
   csv="$out/fracture_growth_peer.csv"
   echo "input,steps,exit_state,peak_RF,peak_step,peak_U,peer_peak_RF,peer_peak_U,wall_s,peer_wall_s,speedup,solve_s,criterion_s,linear_iterations" > "$csv"
@@ -123,7 +135,10 @@ if [ -d "$peer" ]; then
   done
 fi
 
+fi
+
 # ---- 4. adaptive PD region
+if [[ $sections == *4* ]]; then
 csv="$out/fracture_growth_adaptive.csv"
 echo "model,pd_cells_start,pd_cells_end,cells,peak_reaction,peak_step,steps,exit_state,solve_s,total_s" > "$csv"
 for scene in growth_mcts_all_pd growth_mcts_center_crack growth_mcts_adaptive; do
@@ -143,3 +158,4 @@ for scene in growth_mcts_all_pd growth_mcts_center_crack growth_mcts_adaptive; d
   fi
 done
 echo "Results in $out/fracture_*.csv"
+fi
