@@ -205,7 +205,11 @@ namespace pdfem
       else if (settings.criterion == "mcts")
         {
           // Front points, both ends included (one: the middle).
-          s.fronts             = s.integral->straight_fronts(initial_cracks);
+          s.fronts = s.integral->straight_fronts(initial_cracks);
+          if (s.fronts.empty())
+            throw RunFailure("unsupported",
+                             "mcts in 3D: no pre-existing crack (triangles) "
+                             "has a straight front inside the body");
           const unsigned int n = settings.front_points;
           for (unsigned int f = 0; f < s.fronts.size(); ++f)
             for (unsigned int k = 0; k < n; ++k)

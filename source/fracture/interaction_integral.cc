@@ -8,6 +8,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/hp/fe_collection.h>
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/hp/mapping_collection.h>
@@ -169,10 +170,27 @@ namespace pdfem
               }
             else
               {
-                if (cells[c]->reference_cell().is_hyper_cube() ?
-                      cells[c]->point_inside(p) :
-                      p.distance(center[c]) <= 0.5 * radius[c])
-                  return c;
+                // Tolerant: a point on a face between two cells may fall
+                // outside both by round-off (deal.II's point_inside()).
+                const ReferenceCell reference = cells[c]->reference_cell();
+                if (!reference.is_hyper_cube())
+                  {
+                    if (p.distance(center[c]) <= 0.5 * radius[c])
+                      return c;
+                    continue;
+                  }
+                try
+                  {
+                    const Point<dim> unit =
+                      reference.template get_default_linear_mapping<dim>()
+                        .transform_real_to_unit_cell(cells[c], p);
+                    if (reference.contains_point(unit, 1e-10))
+                      return c;
+                  }
+                catch (...)
+                  {
+                    // the inverse map failed: p is far outside this cell
+                  }
               }
           }
         return -1;
