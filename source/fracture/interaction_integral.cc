@@ -712,6 +712,20 @@ namespace pdfem
                         grew    = true;
                       }
                 }
+              // Clip the front to the body (triangles may reach beyond
+              // it): bisection from the midpoint, which is inside.
+              const Point<3> mid = 0.5 * (f.begin + f.end);
+              for (Point<3> *e : {&f.begin, &f.end})
+                if (!inside(*e))
+                  {
+                    Point<3> in = mid, out = *e;
+                    for (unsigned int i = 0; i < 60; ++i)
+                      {
+                        const Point<3> m = 0.5 * (in + out);
+                        (inside(m) ? in : out) = m;
+                      }
+                    *e = in;
+                  }
               fronts.push_back(f);
             }
         }
