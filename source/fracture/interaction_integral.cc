@@ -721,7 +721,7 @@ namespace pdfem
                     Point<3> in = mid, out = *e;
                     for (unsigned int i = 0; i < 60; ++i)
                       {
-                        const Point<3> m = 0.5 * (in + out);
+                        const Point<3> m       = 0.5 * (in + out);
                         (inside(m) ? in : out) = m;
                       }
                     *e = in;

@@ -160,6 +160,7 @@ namespace pdfem
         setup.write_vtu   = prm.output.write_vtu;
         setup.write_every = prm.output.write_every;
         setup.fracture    = prm.fracture;
+
         setup.write_nodes_csv = prm.output.write_nodes_csv;
         setup.print_timings   = prm.output.print_timings;
         auto &timings         = setup.timings;
