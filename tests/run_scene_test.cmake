@@ -12,18 +12,23 @@
 #   # MPI: <n>                                     also run on n ranks: the same checks, and
 #                                                  nodes.csv equal to the 1-rank one (1e-10)
 #   # REQUIRES: <path relative to the scene>      skip (not fail) when the path is absent
+#   # REFERENCE: <scene relative to the scene>    run it once, for CHECK-REFERENCE
+#   # CHECK-REFERENCE: <key> = <reference key> rel|abs <tol>
+#                                                 a value against the reference run's value
 cmake_minimum_required(VERSION 3.16)
 set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
 set(ENV{OMPI_ALLOW_RUN_AS_ROOT_CONFIRM} 1)
 set(ENV{OMPI_MCA_rmaps_base_oversubscribe} 1)
 
-file(STRINGS "${PRM}" directives REGEX "^# (CHECK|CHECK-HISTORY|EXIT-STATE|EXPECT-ERROR|MPI|REQUIRES):")
+file(STRINGS "${PRM}" directives REGEX "^# (CHECK|CHECK-HISTORY|CHECK-REFERENCE|REFERENCE|EXIT-STATE|EXPECT-ERROR|MPI|REQUIRES):")
 get_filename_component(scene_dir "${PRM}" DIRECTORY)
 set(checks "")
 set(history_checks "")
 set(exit_state "completed")
 set(expect_error "")
 set(n_ranks 0)
+set(reference "")
+set(reference_checks "")
 foreach(line IN LISTS directives)
   if(line MATCHES "^# CHECK-HISTORY: *([^ ]+) +(.+)$")
     set(command "${CMAKE_MATCH_1}")
@@ -34,6 +39,10 @@ foreach(line IN LISTS directives)
     list(APPEND checks "${CMAKE_MATCH_1}|${CMAKE_MATCH_2}|${CMAKE_MATCH_3}|${CMAKE_MATCH_4}")
   elseif(line MATCHES "^# CHECK: *([^ ]+) *([<>]) *([^ ]+) *$")
     list(APPEND checks "${CMAKE_MATCH_1}|${CMAKE_MATCH_3}|${CMAKE_MATCH_2}|")
+  elseif(line MATCHES "^# CHECK-REFERENCE: *([^ ]+) *= *([^ ]+) +(rel|abs) +([^ ]+)")
+    list(APPEND reference_checks "${CMAKE_MATCH_1}|${CMAKE_MATCH_2}|${CMAKE_MATCH_3}|${CMAKE_MATCH_4}")
+  elseif(line MATCHES "^# REFERENCE: *(.+)$")
+    string(STRIP "${CMAKE_MATCH_1}" reference)
   elseif(line MATCHES "^# EXIT-STATE: *(.+)$")
     string(STRIP "${CMAKE_MATCH_1}" exit_state)
   elseif(line MATCHES "^# EXPECT-ERROR: *(.+)$")
@@ -115,6 +124,27 @@ function(run_and_check tag launcher)
     message(FATAL_ERROR "${tag}: checks failed")
   endif()
 endfunction()
+
+# A reference scene, run once: CHECK-REFERENCE compares a value of this run with one of it.
+if(reference)
+  execute_process(COMMAND "${PDFEM}" "${scene_dir}/${reference}" --output "${WORK}/reference" --quiet
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("${out}${err}")
+  foreach(check IN LISTS reference_checks)
+    string(REPLACE "|" ";" parts "${check}")
+    list(GET parts 0 key)
+    list(GET parts 1 reference_key)
+    list(GET parts 2 kind)
+    list(GET parts 3 tol)
+    execute_process(COMMAND "${CHECKER}" get "${WORK}/reference/summary.json" ${reference_key}
+      RESULT_VARIABLE crc OUTPUT_VARIABLE value OUTPUT_STRIP_TRAILING_WHITESPACE)
+    if(crc)
+      message(FATAL_ERROR "the reference ${reference} has no ${reference_key}")
+    endif()
+    message("reference ${reference_key} = ${value}")
+    list(APPEND checks "${key}|${value}|${kind}|${tol}")
+  endforeach()
+endif()
 
 run_and_check(np1 "")
 if(n_ranks GREATER 1)

@@ -128,6 +128,7 @@ namespace pdfem
       std::vector<Tip<dim>>                     tips;
       std::vector<Mesh::Crack<dim>>             segments;
       std::vector<Mesh::Crack<dim>>             virtual_cracks;
+      std::vector<Front<dim>>                   fronts; // 3D
 
       double
       length_at(const Point<dim> &p) const
@@ -201,6 +202,28 @@ namespace pdfem
                 s.tips.push_back(tip);
               }
           }
+      else if (settings.criterion == "mcts")
+        {
+          // Front points, both ends included (one: the middle).
+          s.fronts = s.integral->straight_fronts(initial_cracks);
+          if (s.fronts.empty())
+            throw RunFailure("unsupported",
+                             "mcts in 3D: no pre-existing crack (triangles) "
+                             "has a straight front inside the body");
+          const unsigned int n = settings.front_points;
+          for (unsigned int f = 0; f < s.fronts.size(); ++f)
+            for (unsigned int k = 0; k < n; ++k)
+              {
+                Tip<dim> tip;
+                tip.crack = f;
+                tip.s     = s.fronts[f].length() *
+                        (n == 1 ? 0.5 : double(k) / double(n - 1));
+                tip.position =
+                  s.fronts[f].begin + tip.s * s.fronts[f].tangent();
+                tip.direction = s.fronts[f].direction;
+                s.tips.push_back(tip);
+              }
+        }
     }
 
     template <int dim>
@@ -253,12 +276,21 @@ namespace pdfem
             continue;
           const double h   = integral->element_size(tip.position);
           tip.evaluated_at = tip.position;
-          tip.sif          = integral->compute(results,
-                                      tip.position,
-                                      tip.direction,
-                                      settings.domain_inner_radius * h,
-                                      settings.domain_outer_radius * h,
-                                      segments);
+          if constexpr (dim == 2)
+            tip.sif = integral->compute(results,
+                                        tip.position,
+                                        tip.direction,
+                                        settings.domain_inner_radius * h,
+                                        settings.domain_outer_radius * h,
+                                        segments);
+          else
+            tip.sif = integral->compute_front(results,
+                                              fronts[tip.crack],
+                                              tip.s,
+                                              settings.domain_inner_radius * h,
+                                              settings.domain_outer_radius * h,
+                                              settings.front_half_width * h,
+                                              segments);
           std::tie(tip.theta, tip.K_eq) =
             mcts_angle_and_keq(tip.sif.K_I, tip.sif.K_II);
           a.max_driving_value = std::max(a.max_driving_value, tip.K_eq);
@@ -268,6 +300,13 @@ namespace pdfem
         }
       if (!allow_growth)
         return a;
+      if constexpr (dim == 3)
+        for (const Tip<dim> &tip : tips)
+          if (tip.K_eq > settings.toughness)
+            throw RunFailure("unsupported",
+                             "K_eq = " + number(tip.K_eq) +
+                               " exceeds K_Ic at a 3D crack front point; "
+                               "3D fronts do not grow (mcts growth is 2D)");
       if constexpr (dim == 2)
         for (Tip<dim> &tip : tips)
           {

@@ -933,6 +933,18 @@ namespace pdfem
                         Double(0.),
                         "Interaction integral: q falls smoothly to 0 at this "
                         "radius, in element sizes.");
+      prm.declare_entry("Front points",
+                        "5",
+                        Integer(1),
+                        "3D, mcts: the points of each straight crack front "
+                        "where K_I, K_II, K_III and J are computed, evenly "
+                        "spaced, both ends included (1: the middle).");
+      prm.declare_entry("Front half-width",
+                        "2",
+                        Double(0.),
+                        "3D, mcts: the half-width w of the weight along the "
+                        "front, q_s = cos^2(pi d / 2w) for |d| < w, in "
+                        "element sizes at the front point.");
       prm.declare_entry("Growth length",
                         "1",
                         Double(0.),
@@ -973,6 +985,8 @@ namespace pdfem
       tensile_strength    = prm.get_double("Tensile strength");
       domain_inner_radius = prm.get_double("Domain inner radius");
       domain_outer_radius = prm.get_double("Domain outer radius");
+      front_points        = prm.get_integer("Front points");
+      front_half_width    = prm.get_double("Front half-width");
       growth_length       = prm.get_double("Growth length");
       top_k               = prm.get_integer("Top K");
       adaptive_margin     = prm.get_double("Adaptive margin");
@@ -1008,6 +1022,11 @@ namespace pdfem
                            " is not larger than the inner radius " +
                            number(domain_inner_radius),
                          "Domain outer radius > Domain inner radius");
+      if (!(front_half_width > 0.))
+        throw InputError(file,
+                         "Fracture/Front half-width",
+                         number(front_half_width) + " is not positive",
+                         "> 0 element sizes");
       if (criterion != "none" && !(growth_length > 0.))
         throw InputError(file,
                          "Fracture/Growth length",

@@ -252,12 +252,11 @@ namespace pdfem
             {
               const std::string i = std::to_string(k);
               columns.insert(columns.end(),
-                             {"tip" + i + "_x",
-                              "tip" + i + "_y",
-                              "K_I" + i,
-                              "K_II" + i,
-                              "K_eq" + i,
-                              "J" + i});
+                             {"tip" + i + "_x", "tip" + i + "_y"});
+              if (dim == 3) // a crack-front point, with K_III
+                columns.insert(columns.end(), {"tip" + i + "_z", "K_III" + i});
+              columns.insert(columns.end(),
+                             {"K_I" + i, "K_II" + i, "K_eq" + i, "J" + i});
             }
         if (fc2)
           columns.push_back("max_bond_principal_stress");
@@ -316,13 +315,15 @@ namespace pdfem
               }
           if (mcts)
             for (const auto &tip : growth->tips())
-              row.insert(row.end(),
-                         {tip.evaluated_at[0],
-                          tip.evaluated_at[1],
-                          tip.sif.K_I,
-                          tip.sif.K_II,
-                          tip.K_eq,
-                          tip.sif.J});
+              {
+                row.insert(row.end(),
+                           {tip.evaluated_at[0], tip.evaluated_at[1]});
+                if (dim == 3)
+                  row.insert(row.end(),
+                             {tip.evaluated_at[dim - 1], tip.sif.K_III});
+                row.insert(row.end(),
+                           {tip.sif.K_I, tip.sif.K_II, tip.K_eq, tip.sif.J});
+              }
           if (fc2 || stretch)
             row.push_back(assessment.max_driving_value);
           if (fracture.adaptive_margin > 0.)
@@ -506,6 +507,14 @@ namespace pdfem
                     json.begin_object("tip" + std::to_string(k));
                     json.value("x", tip.position[0]);
                     json.value("y", tip.position[1]);
+                    if (dim == 3) // a crack-front point
+                      {
+                        json.value("z", tip.position[dim - 1]);
+                        json.value("front",
+                                   static_cast<unsigned long>(tip.crack));
+                        json.value("s", tip.s);
+                        json.value("K_III", tip.sif.K_III);
+                      }
                     json.value("active", tip.active ? "true" : "false");
                     json.value("K_I", tip.sif.K_I);
                     json.value("K_II", tip.sif.K_II);

@@ -160,11 +160,7 @@ namespace pdfem
         setup.write_vtu   = prm.output.write_vtu;
         setup.write_every = prm.output.write_every;
         setup.fracture    = prm.fracture;
-        if (prm.fracture.criterion == "mcts" && dim != 2)
-          throw InputError(prm.file,
-                           "Fracture/Criterion",
-                           "mcts (stress-intensity factors) is 2D only",
-                           "none or max principal stress in 3D");
+
         setup.write_nodes_csv = prm.output.write_nodes_csv;
         setup.print_timings   = prm.output.print_timings;
         auto &timings         = setup.timings;

@@ -24,11 +24,15 @@ namespace pdfem
 {
   namespace Fracture
   {
-    /** One crack tip: where it is, where it heads, and its last SIFs. */
+    /**
+     * One crack tip (2D), or one point of a straight crack front (3D), where
+     * the SIFs are evaluated: where it is, where it heads, and its last SIFs.
+     */
     template <int dim>
     struct Tip
     {
-      unsigned int           crack  = 0;    // index into the crack paths
+      unsigned int           crack  = 0;    // crack path (2D), front (3D)
+      double                 s      = 0.;   // 3D: distance along the front
       bool                   at_end = true; // last point (else the first)
       dealii::Point<dim>     position;
       dealii::Tensor<1, dim> direction;     // unit, along the crack to the tip
@@ -83,6 +87,12 @@ namespace pdfem
      * touch no other crack (a central crack given as two cracks from its
      * centre, as the peer's examples do, has two tips), unless the tips are
      * listed explicitly (PDLSM-FEM: the second point of each crack).
+     *
+     * In 3D (cracks given as triangles) the tips are `Front points` points
+     * on each straight front (InteractionIntegral::straight_fronts()), both
+     * ends included, where mcts computes K_I, K_II, K_III and J
+     * (doc/theory.md §9.2). 3D fronts do not grow: a front point with K_eq
+     * above K_Ic stops the run (exit state `unsupported`).
      */
     template <int dim>
     class CrackGrowth

@@ -16,12 +16,34 @@ namespace pdfem
 {
   namespace Fracture
   {
-    /** Stress-intensity factors and J at one crack tip. */
+    /** Stress-intensity factors and J at one crack tip or front point. */
     struct StressIntensity
     {
-      double K_I  = 0.; // [Pa sqrt(m)]
-      double K_II = 0.; // [Pa sqrt(m)]
-      double J    = 0.; // [J/m^2]
+      double K_I   = 0.; // [Pa sqrt(m)]
+      double K_II  = 0.; // [Pa sqrt(m)]
+      double K_III = 0.; // [Pa sqrt(m)], 3D only (0 in 2D)
+      double J     = 0.; // [J/m^2]
+    };
+
+    /**
+     * A straight crack front (3D): the segment [begin, end] of the boundary
+     * of a crack surface that lies inside the body (doc/theory.md §9.2).
+     * The front axes: x1 = @p direction (in the crack plane, normal to the
+     * front, away from the crack), x3 = (end - begin)/|end - begin| and
+     * x2 = x3 x x1 (normal to the crack plane), right-handed. In 2D a tip is
+     * a front of one point (begin = end).
+     */
+    template <int dim>
+    struct Front
+    {
+      dealii::Point<dim>     begin, end;
+      dealii::Tensor<1, dim> direction;
+      /// x3, unit (zero in 2D).
+      dealii::Tensor<1, dim>
+      tangent() const;
+      /// The length of the front.
+      double
+      length() const;
     };
 
     /**
@@ -50,7 +72,17 @@ namespace pdfem
      * never mixed. Stresses are C : sym(grad u). Everything is computed from
      * replicated nodal results: every rank gets the same numbers.
      *
-     * 2D only (3D straight fronts: not yet; compute() throws there).
+     * In 3D, at a point s_k of a straight front (compute_front()), the
+     * same integrands in the front axes (x1 normal to the front in the crack
+     * plane, x2 normal to the crack plane, x3 along the front) over a volume,
+     * with q(x) = q_r(r) q_s(x3 - s_k), r = (x1^2 + x2^2)^(1/2), q_s the
+     * bump cos^2(pi d / 2w) of half-width w, divided by the virtual crack
+     * advance int q_s ds (doc/theory.md §9.2, eq. 9.4-9.7; Shih, Moran &
+     * Nakamura 1986; Walters, Paulino & Dodds 2005). The auxiliary fields
+     * are the plane-strain Williams fields and the mode-III field, with
+     * K_M = E' I^(M)/2 (E' = E/(1 - nu^2)) and K_III = mu I^(III). For a
+     * straight front and sigma^M = C : eps^M the integrand is
+     * divergence-free, so no volume term is left.
      */
     template <int dim>
     class InteractionIntegral
@@ -72,6 +104,30 @@ namespace pdfem
               double                               r_in,
               double                               r_out,
               const std::vector<Mesh::Crack<dim>> &cracks) const;
+
+      /**
+       * K_I, K_II, K_III and J at the point @p s (0 <= s <= length) of the
+       * straight @p front (3D, eq. 9.4-9.7): q_r is the annulus r_in..r_out
+       * of compute(), q_s the bump of half-width @p half_width. 2D: the tip
+       * @p front.begin, as compute().
+       */
+      StressIntensity
+      compute_front(const Coupling::NodalResults<dim>   &results,
+                    const Front<dim>                    &front,
+                    double                               s,
+                    double                               r_in,
+                    double                               r_out,
+                    double                               half_width,
+                    const std::vector<Mesh::Crack<dim>> &cracks) const;
+
+      /**
+       * The straight fronts of @p cracks (3D, triangles): the edges of the
+       * crack surfaces used by one triangle only, whose outside (a point
+       * just beyond the edge in the crack plane) is inside the body, joined
+       * when they continue each other on a line. Empty in 2D.
+       */
+      std::vector<Front<dim>>
+      straight_fronts(const std::vector<Mesh::Crack<dim>> &cracks) const;
 
       /// The size of the cell nearest to @p p: measure^(1/dim).
       double

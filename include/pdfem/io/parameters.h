@@ -239,6 +239,10 @@ namespace pdfem
       /// of the cell nearest the tip.
       double domain_inner_radius = 4.;
       double domain_outer_radius = 10.;
+      /// 3D: points per straight crack front (ends included) and the
+      /// half-width of the weight along the front, in element sizes.
+      unsigned int front_points     = 5;
+      double       front_half_width = 2.;
       /// d_c (mcts) and the virtual crack length (FC 2), in element sizes
       /// at the tip or bond; growth_length_absolute > 0 overrides [m].
       double       growth_length          = 1.;
