@@ -41,6 +41,7 @@ namespace pdfem
             }
           PD::Families                 &f = s.families;
           std::vector<Mesh::Crack<dim>> near;
+          std::vector<std::size_t>      cut_families;
           for (std::size_t o = 0; o < f.owners.size(); ++o)
             {
               const unsigned int k = f.owners[o];
@@ -59,13 +60,22 @@ namespace pdfem
                 }
               if (near.empty())
                 continue;
+              bool lost = false;
               for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
                 if (f.intact[b] && !s.no_fail[f.members[b]] &&
                     Mesh::cut_by_any(near, s.x[k], s.x[f.members[b]]))
                   {
                     f.intact[b] = 0;
                     ++n;
+                    lost = true;
                   }
+              if (lost)
+                cut_families.push_back(o);
+            }
+          if (s.settings.free_crack_faces)
+            {
+              s.refit_families(cut_families);
+              s.add_crack_face_area(cracks);
             }
         }
       n = Utilities::MPI::sum(n, s.comm);

@@ -136,6 +136,13 @@ namespace pdfem
        */
       unsigned int
       compute_weights();
+      /// Refit the listed families (indices into families.owners) over
+      /// their intact bonds (Settings::free_crack_faces).
+      void
+      refit_families(const std::vector<std::size_t> &family_indices);
+      /// Add the crack faces' share to boundary_area (free_crack_faces, 2D).
+      void
+      add_crack_face_area(const std::vector<Mesh::Crack<dim>> &cracks);
 
       /// Owners without any intact bond and without FE cells: nothing ties
       /// them to the body any more, so they are held where they are.

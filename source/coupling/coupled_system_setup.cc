@@ -5,6 +5,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
@@ -254,6 +255,17 @@ namespace pdfem
                                  x[families.owners[o]],
                                  x[families.members[b]]))
               families.intact[b] = 0;
+      if (settings.free_crack_faces && !settings.cracks.empty())
+        {
+          std::vector<std::size_t> cut_families;
+          for (std::size_t o = 0; o < families.owners.size(); ++o)
+            if (std::any_of(families.intact.begin() + families.offsets[o],
+                            families.intact.begin() + families.offsets[o + 1],
+                            [](const std::uint8_t i) { return i == 0; }))
+              cut_families.push_back(o);
+          refit_families(cut_families);
+          add_crack_face_area(settings.cracks);
+        }
 
       update_decoupled();
 
@@ -324,6 +336,122 @@ namespace pdfem
           std::copy(b.begin(), b.end(), weight_b.begin() + first);
         }
       return n_failed;
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::refit_families(
+      const std::vector<std::size_t> &family_indices)
+    {
+      // The fit over the intact bonds alone: at a crack face the family is
+      // one-sided, as at an outer boundary. A family too small for the
+      // second-order fit keeps the weights of its whole family.
+      std::vector<Tensor<1, dim>>          xi, a;
+      std::vector<double>                  vol;
+      std::vector<SymmetricTensor<2, dim>> b;
+      std::vector<std::size_t>             bond;
+      for (const std::size_t o : family_indices)
+        {
+          const unsigned int k = families.owners[o];
+          xi.clear();
+          vol.clear();
+          bond.clear();
+          for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
+               ++j)
+            if (families.intact[j])
+              {
+                xi.push_back(x[families.members[j]] - x[k]);
+                vol.push_back(volume[families.members[j]]);
+                bond.push_back(j);
+              }
+          if (!pdlsm.compute_weights(xi, vol, horizon[k], a, b))
+            continue;
+          for (std::size_t i = 0; i < bond.size(); ++i)
+            {
+              weight_a[bond[i]] = a[i];
+              weight_b[bond[i]] = b[i];
+            }
+        }
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::add_crack_face_area(
+      const std::vector<Mesh::Crack<dim>> &cracks)
+    {
+      // s_k += int_crack N_k / (sum of N_j over the vertices on k's side) n_k
+      // dS, n_k pointing from k's side into the crack, over the crack's
+      // pieces inside PD cells: each face of the crack is a boundary of the
+      // cells' vertices on its side, and their shares add up to the face.
+      // Midpoint rule with 8 points per cell size along the crack.
+      if constexpr (dim == 2)
+        for (const auto &crack : cracks)
+          {
+            const Point<dim>     p0 = crack.points[0], p1 = crack.points[1];
+            const Tensor<1, dim> t = p1 - p0;
+            const double         L = t.norm();
+            if (!(L > 0.))
+              continue;
+            const Tensor<1, dim> n({-t[1] / L, t[0] / L});
+            const auto           first =
+              GridTools::find_active_cell_around_point(mapping,
+                                                       node_dofs_handler,
+                                                       0.5 * (p0 + p1));
+            const double       h = first.first.state() == IteratorState::valid ?
+                                     first.first->diameter() / std::sqrt(2.) :
+                                     L;
+            const unsigned int n_points =
+              std::max(1u, static_cast<unsigned int>(std::ceil(8. * L / h)));
+            for (unsigned int q = 0; q < n_points; ++q)
+              {
+                const Point<dim> p  = p0 + ((q + 0.5) / n_points) * t;
+                const double     ds = L / n_points;
+                std::pair<typename DoFHandler<dim>::active_cell_iterator,
+                          Point<dim>>
+                  found;
+                try
+                  {
+                    found = GridTools::find_active_cell_around_point(
+                      mapping, node_dofs_handler, p);
+                  }
+                catch (...)
+                  {
+                    continue; // outside the body
+                  }
+                const auto &cell = found.first;
+                if (cell.state() != IteratorState::valid ||
+                    !cell_pd[cell->active_cell_index()])
+                  continue;
+                const auto         &fe = cell->get_fe();
+                std::vector<double> N(cell->n_vertices());
+                double              side_sum[2] = {0., 0.};
+                std::vector<int>    side(cell->n_vertices());
+                // Only vertices that the crack separates from a vertex of
+                // the other side face it: near the tip, those ahead of it
+                // do not.
+                std::vector<bool> faces(cell->n_vertices(), false);
+                for (const unsigned int v : cell->vertex_indices())
+                  side[v] = n * (cell->vertex(v) - p) > 0. ? 0 : 1;
+                for (const unsigned int v : cell->vertex_indices())
+                  for (const unsigned int u : cell->vertex_indices())
+                    if (side[u] != side[v] &&
+                        crack.cuts(cell->vertex(v), cell->vertex(u)))
+                      faces[v] = true;
+                for (const unsigned int v : cell->vertex_indices())
+                  if (faces[v])
+                    {
+                      N[v] = fe.shape_value(v, found.second);
+                      side_sum[side[v]] += N[v];
+                    }
+                for (const unsigned int v : cell->vertex_indices())
+                  if (faces[v] && side_sum[side[v]] > 1e-12)
+                    boundary_area[vertex_to_node[cell->vertex_index(v)]] +=
+                      (side[v] == 0 ? -1. : 1.) * N[v] / side_sum[side[v]] *
+                      ds * n;
+              }
+          }
+      else
+        (void)cracks;
     }
 
     template <int dim>

@@ -332,6 +332,17 @@ namespace pdfem
                         Selection("all nodes|pd nodes"),
                         "Which nodes may belong to a PD family: every mesh "
                         "node within the horizon, or PD nodes only.");
+      prm.declare_entry(
+        "Crack faces",
+        "cut bonds",
+        Selection("cut bonds|free surface"),
+        "How a crack (pre-existing or grown by mcts) enters the PDLSM model. "
+        "'cut bonds': the bonds crossing it are removed and every family "
+        "keeps the fit of its whole initial family (PDLSM-FEM). 'free "
+        "surface': in addition, families that lost bonds to a crack are "
+        "refitted over their intact bonds, and the crack faces get the "
+        "PDLSM boundary term s_k of an outer boundary, so that they are "
+        "traction free (2D only; doc/theory.md §9).");
       prm.declare_entry("Pre-existing cracks",
                         "",
                         Anything(),
@@ -350,9 +361,15 @@ namespace pdfem
       horizon_factor               = prm.get_double("Horizon factor");
       weight_factor                = prm.get_double("Weight factor");
       fe_nodes_in_families         = prm.get("Family members") == "all nodes";
+      free_crack_faces             = prm.get("Crack faces") == "free surface";
       const std::string crack_text = prm.get("Pre-existing cracks");
       prm.leave_subsection();
 
+      if (free_crack_faces && dim != 2)
+        throw InputError(file,
+                         "Peridynamics/Crack faces",
+                         "'free surface' is implemented in 2D only",
+                         "'cut bonds' in 3D");
       if (!(horizon_factor >= 1.))
         throw InputError(file,
                          "Peridynamics/Horizon factor",

@@ -276,6 +276,7 @@ namespace pdfem
         settings.horizon_factor       = prm.peridynamics.horizon_factor;
         settings.weight_factor        = prm.peridynamics.weight_factor;
         settings.fe_nodes_in_families = prm.peridynamics.fe_nodes_in_families;
+        settings.free_crack_faces     = prm.peridynamics.free_crack_faces;
         settings.cracks = Mesh::make_cracks<dim>(prm.peridynamics.cracks);
         settings.dirichlet =
           resolve_conditions<dim>(prm.boundary_conditions.dirichlet,

@@ -64,10 +64,14 @@ namespace pdfem
     template <int dim>
     struct Settings
     {
-      FE::ElasticMaterial                 material;
-      double                              horizon_factor       = 3.;
-      double                              weight_factor        = 0.33;
-      bool                                fe_nodes_in_families = true;
+      FE::ElasticMaterial material;
+      double              horizon_factor       = 3.;
+      double              weight_factor        = 0.33;
+      bool                fe_nodes_in_families = true;
+      /// Crack faces as free surfaces: families that lose bonds to a crack
+      /// are refitted over their intact bonds, and the crack faces carry the
+      /// boundary term s_k (2D). Otherwise PDLSM-FEM's cut bonds alone.
+      bool                                free_crack_faces = false;
       std::vector<Mesh::Crack<dim>>       cracks;
       std::vector<BoundaryCondition<dim>> dirichlet;
       std::vector<BoundaryCondition<dim>> traction;

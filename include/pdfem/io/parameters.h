@@ -74,6 +74,9 @@ namespace pdfem
       /// Whether FE-only nodes may be family members ("all nodes"), or only
       /// PD nodes ("pd nodes").
       bool fe_nodes_in_families = true;
+      /// Crack faces as free surfaces (one-sided fits and a face term) rather
+      /// than PDLSM-FEM's cut bonds alone.
+      bool free_crack_faces = false;
       /// Pre-existing cracks: 2D segments "(x1, y1) -- (x2, y2)", 3D
       /// triangles "(x,y,z) -- (x,y,z) -- (x,y,z)", separated by ';'.
       std::vector<std::vector<std::array<double, 3>>> cracks;
