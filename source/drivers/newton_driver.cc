@@ -190,22 +190,64 @@ namespace pdfem
       StabilityInterface                                 *stability,
       const std::function<void(const StabilityReport &)> &on_check)
     {
+      run_arc_length(
+        system,
+        u,
+        [&q](const SystemInterface::Vector &,
+             double,
+             SystemInterface::Vector &dr_dt) { dr_dt = q; },
+        max_steps,
+        on_step,
+        stability,
+        on_check);
+    }
+
+    void
+    NewtonDriver::run_arc_length(
+      SystemInterface                                    &system,
+      SystemInterface::Vector                            &u,
+      const LoadDerivative                               &load_derivative,
+      const unsigned int                                  max_steps,
+      const std::function<void(const StepRecord &)>      &on_step,
+      StabilityInterface                                 *stability,
+      const std::function<void(const StabilityReport &)> &on_check)
+    {
       result = NewtonOutcome();
-      SystemInterface::Vector r, dq, dr, w, last = u, increment;
+      SystemInterface::Vector r, dq, dr, w, q, last = u, increment;
       system.initialize_vector(r);
       system.initialize_vector(dq);
       system.initialize_vector(dr);
+      system.initialize_vector(q);
+      // The constraint measures the free DoFs only: zero the prescribed
+      // entries of v (apply_dirichlet writes u_p(0) into them, p0 holds
+      // u_p(0) there and 0 elsewhere).
+      SystemInterface::Vector p0;
+      system.initialize_vector(p0);
+      system.apply_dirichlet(p0, 0.);
+      const auto free_part = [&](SystemInterface::Vector &v) {
+        system.apply_dirichlet(v, 0.);
+        v -= p0;
+      };
       // ---- first step: load control
       StepRecord   first;
       const double t0 = 1. / std::max(1u, settings.load_steps);
       first.step      = 1;
       first.time = first.load_factor = t0;
+      // tangent predictor u + t0 K^-1 dr/dt: under hard loading, the
+      // prescribed values alone would stretch the bonds next to the
+      // boundary layer far into softening
+      system.residual(u, 0., r, true);
+      load_derivative(u, 0., q);
+      system.solve_linear(dq, q);
+      u.add(t0, dq);
+      system.apply_dirichlet(u, t0);
       if (!solve_step(system, u, t0, first))
         throw RunFailure("diverged",
                          "arc length: the first, load-controlled step "
                          "does not converge");
       increment = u;
       increment -= last;
+      free_part(increment);
       double dl = increment.l2_norm(), lambda = t0;
       last                    = u;
       result.last_stable_load = lambda;
@@ -216,14 +258,16 @@ namespace pdfem
       unsigned int level = 0;
       for (unsigned int step = 2; step <= max_steps && lambda < 1.;)
         {
-          // predictor along K^-1 q (K of the last converged state)
+          // predictor along K^-1 dr/dt (K of the last converged state)
           system.residual(last, lambda, r, true);
+          load_derivative(last, lambda, q);
           system.solve_linear(dq, q);
           double sign = (dq * increment) >= 0. ? 1. : -1.;
           double dlam = sign * dl / dq.l2_norm();
           u           = last;
           u.add(dlam, dq);
-          double     lam = lambda + dlam;
+          double lam = lambda + dlam;
+          system.apply_dirichlet(u, lam);
           StepRecord record;
           record.step = step;
           bool   ok   = false;
@@ -244,12 +288,15 @@ namespace pdfem
                 }
               if (it == settings.max_iterations)
                 break;
+              load_derivative(u, lam, q);
               system.solve_linear(dr, r);
               system.solve_linear(dq, q);
-              // |Delta u + dr + dlam dq| = dl, Delta u = u - last
+              // |Delta u + dr + dlam dq| = dl, Delta u = u - last (free DoFs:
+              // dr and dq vanish on the prescribed ones)
               w = u;
               w -= last;
               w += dr;
+              free_part(w);
               const double a = dq * dq, b = 2. * (dq * w), c = w * w - dl * dl;
               const double disc = b * b - 4. * a * c;
               if (!(disc >= 0.) || !(a > 0.))
@@ -265,6 +312,7 @@ namespace pdfem
               u += dr;
               u.add(d, dq);
               lam += d;
+              system.apply_dirichlet(u, lam);
               ++record.newton_iterations;
               record.linear_iterations += 2;
             }
@@ -286,6 +334,7 @@ namespace pdfem
           level     = 0;
           increment = u;
           increment -= last;
+          free_part(increment);
           last        = u;
           lambda      = lam;
           record.time = record.load_factor = lambda;

@@ -134,6 +134,35 @@ namespace pdfem
         StabilityInterface                                 *stability,
         const std::function<void(const StabilityReport &)> &on_check = {});
 
+      /// d r / d t on the free DoFs at (u, t), r = f_ext - f_int: q for
+      /// f_ext = t q, and -K_fp(u) d u_p / d t for prescribed values that
+      /// move with t (hard loading).
+      using LoadDerivative =
+        std::function<void(const SystemInterface::Vector &u,
+                           double                         t,
+                           SystemInterface::Vector       &dr_dt)>;
+
+      /**
+       * Arc-length continuation for any load path r(u, t): soft loading
+       * (f_ext = t q), hard loading (prescribed values u_p(t), written by
+       * SystemInterface::apply_dirichlet at every iterate), or both. The
+       * linearisation r + d r/d t dt - K du = 0 gives du = K^-1 r + dt
+       * K^-1 d r/d t, as above with q replaced by @p load_derivative at the
+       * current iterate; the constraint |Delta u| = Delta l is on the free
+       * DoFs. Under displacement control this follows a snap-back (the
+       * prescribed displacement decreasing while the crack grows), where
+       * load-controlled Newton stops.
+       */
+      void
+      run_arc_length(
+        SystemInterface                                    &system,
+        SystemInterface::Vector                            &u,
+        const LoadDerivative                               &load_derivative,
+        unsigned int                                        max_steps,
+        const std::function<void(const StepRecord &)>      &on_step,
+        StabilityInterface                                 *stability,
+        const std::function<void(const StabilityReport &)> &on_check = {});
+
     private:
       /// Newton at load factor t from u; true if converged.
       bool
