@@ -704,68 +704,66 @@ namespace pdfem
         start = clock::now();
         try
           {
+            // f_ext(t) = t q and prescribed values affine in t,
+            // u_p(t) = u_p(0) + t w: soft loading (w = 0), hard loading
+            // (q = 0) or both. d r / d t = q - K_fp(u) w on the free
+            // DoFs.
+            std::vector<double> f0(n_dofs), f1(n_dofs), fh(n_dofs),
+              u0(n_dofs, 0.), u1(n_dofs, 0.), uh(n_dofs, 0.);
+            loads.external_force(0., f0);
+            loads.external_force(1., f1);
+            loads.external_force(0.5, fh);
+            loads.prescribed(0., u0);
+            loads.prescribed(1., u1);
+            loads.prescribed(0.5, uh);
+            double fmax = 0., fdev = 0., umax = 0., udev = 0.;
+            auto   w = std::make_shared<std::vector<double>>(n_dofs, 0.);
+            for (unsigned int d = 0; d < n_dofs; ++d)
+              {
+                fmax = std::max(fmax, std::abs(f1[d]));
+                fdev = std::max(
+                  {fdev, std::abs(f0[d]), std::abs(fh[d] - 0.5 * f1[d])});
+                if (loads.constrained[d])
+                  {
+                    (*w)[d] = u1[d] - u0[d];
+                    umax    = std::max(umax, std::abs((*w)[d]));
+                    udev =
+                      std::max(udev, std::abs(uh[d] - 0.5 * (u0[d] + u1[d])));
+                  }
+              }
+            const bool linear_in_t =
+              !(fdev > 1e-12 * fmax || udev > 1e-12 * umax ||
+                (fmax == 0. && umax == 0.));
+            auto q = std::make_shared<std::vector<double>>(n_dofs, 0.);
+            for (unsigned int d = 0; d < n_dofs; ++d)
+              if (!loads.constrained[d])
+                (*q)[d] = f1[d];
+            Drivers::NewtonDriver::LoadDerivative dr_dt;
+            if (linear_in_t)
+              dr_dt =
+                [&system, q, w, umax, n_dofs, constrained = loads.constrained](
+                  const TrilinosWrappers::MPI::Vector &u,
+                  double,
+                  TrilinosWrappers::MPI::Vector &out) {
+                  system.initialize_vector(out);
+                  std::vector<double> Kw(n_dofs, 0.);
+                  if (umax > 0.)
+                    system.tangent_product(
+                      std::vector<double>(u.begin(), u.end()), *w, Kw);
+                  for (unsigned int d = 0; d < n_dofs; ++d)
+                    if (!constrained[d])
+                      out[d] = (*q)[d] - Kw[d];
+                  out.compress(VectorOperation::insert);
+                };
             if (setup.driver.type == "arc length")
               {
-                // f_ext(t) = t q and prescribed values affine in t,
-                // u_p(t) = u_p(0) + t w: soft loading (w = 0), hard loading
-                // (q = 0) or both. d r / d t = q - K_fp(u) w on the free
-                // DoFs.
-                std::vector<double> f0(n_dofs), f1(n_dofs), fh(n_dofs),
-                  u0(n_dofs, 0.), u1(n_dofs, 0.), uh(n_dofs, 0.);
-                loads.external_force(0., f0);
-                loads.external_force(1., f1);
-                loads.external_force(0.5, fh);
-                loads.prescribed(0., u0);
-                loads.prescribed(1., u1);
-                loads.prescribed(0.5, uh);
-                double fmax = 0., fdev = 0., umax = 0., udev = 0.;
-                auto   w = std::make_shared<std::vector<double>>(n_dofs, 0.);
-                for (unsigned int d = 0; d < n_dofs; ++d)
-                  {
-                    fmax = std::max(fmax, std::abs(f1[d]));
-                    fdev = std::max(
-                      {fdev, std::abs(f0[d]), std::abs(fh[d] - 0.5 * f1[d])});
-                    if (loads.constrained[d])
-                      {
-                        (*w)[d] = u1[d] - u0[d];
-                        umax    = std::max(umax, std::abs((*w)[d]));
-                        udev =
-                          std::max(udev,
-                                   std::abs(uh[d] - 0.5 * (u0[d] + u1[d])));
-                      }
-                  }
-                if (fdev > 1e-12 * fmax || udev > 1e-12 * umax ||
-                    (fmax == 0. && umax == 0.))
+                if (!linear_in_t)
                   throw InputError(
                     prm.file,
                     "Driver/Type",
                     "arc length needs loads linear in t (tractions and body "
                     "force t q, prescribed values u_p(0) + t w)",
                     "such loads, or the newton driver");
-                auto q = std::make_shared<std::vector<double>>(n_dofs, 0.);
-                for (unsigned int d = 0; d < n_dofs; ++d)
-                  if (!loads.constrained[d])
-                    (*q)[d] = f1[d];
-                const Drivers::NewtonDriver::LoadDerivative dr_dt =
-                  [&system,
-                   q,
-                   w,
-                   umax,
-                   n_dofs,
-                   constrained =
-                     loads.constrained](const TrilinosWrappers::MPI::Vector &u,
-                                        double,
-                                        TrilinosWrappers::MPI::Vector &out) {
-                    system.initialize_vector(out);
-                    std::vector<double> Kw(n_dofs, 0.);
-                    if (umax > 0.)
-                      system.tangent_product(
-                        std::vector<double>(u.begin(), u.end()), *w, Kw);
-                    for (unsigned int d = 0; d < n_dofs; ++d)
-                      if (!constrained[d])
-                        out[d] = (*q)[d] - Kw[d];
-                    out.compress(VectorOperation::insert);
-                  };
                 Drivers::NewtonDriver driver(setup.driver);
                 try
                   {
@@ -793,7 +791,16 @@ namespace pdfem
                 Drivers::NewtonDriver driver(setup.driver);
                 try
                   {
-                    driver.run(system, u, on_step, &system);
+                    // The snap-back continuation under hard loading only: under
+                    // force control a fold is the end of quasi-static growth
+                    // (the jump is the dynamic, unstable growth).
+                    driver.run(system,
+                               u,
+                               on_step,
+                               &system,
+                               umax > 0. ?
+                                 dr_dt :
+                                 Drivers::NewtonDriver::LoadDerivative());
                   }
                 catch (...)
                   {
@@ -918,6 +925,10 @@ namespace pdfem
         json.value("step_cuts", static_cast<unsigned long>(outcome.n_cuts));
         json.value("unstable_states",
                    static_cast<unsigned long>(outcome.n_unstable_states));
+        json.value("snap_backs",
+                   static_cast<unsigned long>(outcome.n_snap_backs));
+        json.value("path_states",
+                   static_cast<unsigned long>(outcome.n_path_states));
         json.value("negative_eigenvalues",
                    static_cast<unsigned long>(outcome.last_check.n_negative));
         json.value("smallest_relative_pivot",
