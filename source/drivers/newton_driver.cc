@@ -200,58 +200,71 @@ namespace pdfem
           if (load_derivative && stability != nullptr &&
               settings.stability_check && step > 0 && t > t_previous)
             {
-              SystemInterface::Vector increment = last, path_last = last;
-              increment -= previous;
-              free_part(increment);
-              // Start with the last (smallest) increment: a longer arc can
-              // jump from the fold onto other, unstable branches; easy
-              // steps lengthen it below.
-              double dl     = increment.l2_norm();
-              double lambda = t;
-              bool   passed = false;
-              for (unsigned int k = 0, cuts = 0;
-                   k < settings.arc_length_steps && dl > 0.;)
+              SystemInterface::Vector first_increment = last;
+              first_increment -= previous;
+              free_part(first_increment);
+              // Two tries. First a short arc, the last (smallest)
+              // increment: a longer one can jump from the fold onto other,
+              // unstable branches; easy steps lengthen it. If that path
+              // does not come back (it can wander along unstable branches),
+              // the last increment scaled to a full load step, which jumps
+              // across small snap-backs directly.
+              const double dl_short = first_increment.l2_norm();
+              const double dl_long  = dl_short * base / (t - t_previous);
+              bool         passed   = false;
+              double       lambda   = t;
+              for (const double dl0 : {dl_short, dl_long})
                 {
-                  StepRecord path;
-                  double     lam;
-                  if (!arc_step(system,
-                                u,
-                                lam,
-                                path_last,
-                                lambda,
-                                increment,
-                                dl,
-                                load_derivative,
-                                free_part,
-                                path))
+                  SystemInterface::Vector increment = first_increment,
+                                          path_last = last;
+                  double dl                         = dl0;
+                  lambda                            = t;
+                  for (unsigned int k = 0, cuts = 0;
+                       k < settings.arc_length_steps && dl > 0.;)
                     {
-                      // next to the fold K_ff is nearly singular: the
-                      // corrector may need a much shorter arc
-                      if (++cuts > std::max(settings.max_step_cuts, 8u))
-                        break;
-                      dl *= 0.5;
-                      continue;
+                      StepRecord path;
+                      double     lam;
+                      if (!arc_step(system,
+                                    u,
+                                    lam,
+                                    path_last,
+                                    lambda,
+                                    increment,
+                                    dl,
+                                    load_derivative,
+                                    free_part,
+                                    path))
+                        {
+                          // next to the fold K_ff is nearly singular: the
+                          // corrector may need a much shorter arc
+                          if (++cuts > std::max(settings.max_step_cuts, 8u))
+                            break;
+                          dl *= 0.5;
+                          continue;
+                        }
+                      cuts = 0;
+                      ++k;
+                      ++result.n_path_states;
+                      // easy steps lengthen the arc: the unstable part of
+                      // the path can be long compared with the last step
+                      if (path.newton_iterations <= 3)
+                        dl *= 1.5;
+                      increment = u;
+                      increment -= path_last;
+                      free_part(increment);
+                      path_last         = u;
+                      lambda            = lam;
+                      result.last_check = stability->check_stability();
+                      if (!result.last_check.stable())
+                        ++result.n_unstable_states;
+                      else if (lambda > t_new)
+                        {
+                          passed = true;
+                          break;
+                        }
                     }
-                  cuts = 0;
-                  ++k;
-                  ++result.n_path_states;
-                  // easy steps lengthen the arc: the unstable part of the
-                  // path can be long compared with the last load step
-                  if (path.newton_iterations <= 3)
-                    dl *= 1.5;
-                  increment = u;
-                  increment -= path_last;
-                  free_part(increment);
-                  path_last         = u;
-                  lambda            = lam;
-                  result.last_check = stability->check_stability();
-                  if (!result.last_check.stable())
-                    ++result.n_unstable_states;
-                  else if (lambda > t_new)
-                    {
-                      passed = true;
-                      break;
-                    }
+                  if (passed)
+                    break;
                 }
               if (passed)
                 {

@@ -875,32 +875,36 @@ namespace pdfem
         std::ofstream  out(setup.out_dir + "/summary.json");
         IO::JsonWriter json(out);
         json.begin_object();
-        json.value("pdfem_version", PDFEM_VERSION);
-        json.value("scene", setup.name);
-        json.value("input_file", setup.file);
-        json.value("dimension", static_cast<unsigned long>(dim));
-        json.value("ranks", 1ul);
-        json.value("exit_state", exit_state);
-        json.value("message", message);
-        json.begin_object("problem");
-        json.value("nodes", static_cast<unsigned long>(x.size()));
-        json.value("pd_nodes",
-                   static_cast<unsigned long>(
-                     std::count(pd_node.begin(), pd_node.end(), 1)));
+        {
+          // the problem sizes every driver writes (scene_internal.h); the
+          // RNP-only ones go to "rnp"
+          Coupling::ProblemSize size;
+          size.n_nodes    = x.size();
+          size.n_pd_nodes = std::count(pd_node.begin(), pd_node.end(), 1);
+          std::vector<std::uint8_t> in_fe(x.size(), 0);
+          for (const auto &dofs : elements.dofs)
+            for (const unsigned int d : dofs)
+              in_fe[d / dim] = 1;
+          for (unsigned int i = 0; i < x.size(); ++i)
+            size.n_interface_nodes += pd_node[i] && in_fe[i];
+          size.n_cells    = tria.n_active_cells();
+          size.n_pd_cells = tria.n_active_cells() - elements.dofs.size();
+          size.n_dofs     = n_dofs;
+          size.n_bonds    = system.n_bonds();
+          size.n_matrix_entries =
+            system.matrix().size() * (system.matrix().bandwidth() + 1);
+          Coupling::ProblemSize final_size = size;
+          final_size.n_decoupled_nodes     = system.n_decoupled_nodes();
+          write_summary_header(
+            json, setup, comm, exit_state, message, size, final_size);
+        }
+        json.begin_object("rnp");
         json.value("fe_cells",
                    static_cast<unsigned long>(elements.dofs.size()));
-        json.value("cells", static_cast<unsigned long>(tria.n_active_cells()));
-        json.value("dofs", static_cast<unsigned long>(n_dofs));
-        json.value("bonds", static_cast<unsigned long>(system.n_bonds()));
         json.value("cut_bonds",
                    static_cast<unsigned long>(system.n_cut_bonds()));
-        json.value("broken_bonds", 0ul);
-        json.value("decoupled_nodes",
-                   static_cast<unsigned long>(system.n_decoupled_nodes()));
         json.value("bandwidth",
                    static_cast<unsigned long>(system.matrix().bandwidth()));
-        json.end_object();
-        json.begin_object("rnp");
         json.value("C", model.C);
         json.value("beta", model.beta);
         json.value("horizon", model.horizon);
