@@ -93,7 +93,8 @@ namespace pdfem
       const RNPTangent                 tangent,
       const std::vector<std::uint8_t> &pd_node,
       const LinearElements            &elements,
-      const bool                       fe_members)
+      const bool                       fe_members,
+      const std::vector<double>       &energy_weight)
       : x(x_in)
       , volume(v_in)
       , rnp(settings)
@@ -124,6 +125,9 @@ namespace pdfem
                   continue;
                 }
               members.push_back(j);
+              weight.push_back(energy_weight.empty() ?
+                                 1. :
+                                 0.5 * (energy_weight[i] + energy_weight[j]));
               shortest = std::min(shortest, x[i].distance(x[j]));
             }
           offsets.push_back(members.size());
@@ -227,8 +231,8 @@ namespace pdfem
       for (std::size_t b = offsets[i]; b < offsets[i + 1]; ++b)
         {
           const unsigned int j = members[b];
-          sum +=
-            volume[j] * rnp.force(x[j] - x[i], node_vector<dim>(u, j) - ui);
+          sum += volume[j] * weight[b] *
+                 rnp.force(x[j] - x[i], node_vector<dim>(u, j) - ui);
         }
       for (unsigned int c = 0; c < dim; ++c)
         f[c] = -volume[i] * sum[c];
@@ -249,7 +253,7 @@ namespace pdfem
               if (j < i)
                 continue;
               const Tensor<1, dim> t =
-                (volume[i] * volume[j]) *
+                (volume[i] * volume[j] * weight[b]) *
                 rnp.force(x[j] - x[i], node_vector<dim>(u, j) - ui);
               for (unsigned int c = 0; c < dim; ++c)
                 {
@@ -278,6 +282,7 @@ namespace pdfem
                        const std::vector<double>       &volume,
                        const std::vector<std::size_t>  &offsets,
                        const std::vector<unsigned int> &members,
+                       const std::vector<double>       &weight,
                        const PDModels::RNP<dim>        &rnp,
                        const std::vector<double>       &u,
                        Add                            &&add)
@@ -291,7 +296,7 @@ namespace pdfem
                 if (j < i)
                   continue;
                 const Tensor<2, dim> A =
-                  (volume[i] * volume[j]) *
+                  (volume[i] * volume[j] * weight[b]) *
                   rnp.stiffness(x[j] - x[i], node_vector<dim>(u, j) - ui);
                 for (unsigned int p = 0; p < dim; ++p)
                   for (unsigned int q = 0; q < dim; ++q)
@@ -325,6 +330,7 @@ namespace pdfem
                                 volume,
                                 offsets,
                                 members,
+                                weight,
                                 rnp,
                                 u,
                                 [&](unsigned int r, unsigned int c, double v) {
@@ -356,6 +362,33 @@ namespace pdfem
 
     template <int dim>
     void
+    RNPSystem<dim>::tangent_product(const std::vector<double> &u,
+                                    const std::vector<double> &v,
+                                    std::vector<double>       &Kv) const
+    {
+      Kv.assign(n_dofs(), 0.);
+      for (std::size_t e = 0; e < fe.dofs.size(); ++e)
+        {
+          const auto   &dofs = fe.dofs[e];
+          const double *Ke   = fe.matrices[e].data();
+          for (std::size_t a = 0; a < dofs.size(); ++a)
+            for (std::size_t b = 0; b < dofs.size(); ++b)
+              Kv[dofs[a]] += Ke[a * dofs.size() + b] * v[dofs[b]];
+        }
+      analytic_entries<dim>(x,
+                            volume,
+                            offsets,
+                            members,
+                            weight,
+                            rnp,
+                            u,
+                            [&](unsigned int r, unsigned int c, double a) {
+                              Kv[r] += a * v[c];
+                            });
+    }
+
+    template <int dim>
+    void
     RNPSystem<dim>::assemble_tangent(const std::vector<double> &u,
                                      const RNPTangent           how)
     {
@@ -375,6 +408,7 @@ namespace pdfem
                                 volume,
                                 offsets,
                                 members,
+                                weight,
                                 rnp,
                                 u,
                                 [&](unsigned int r, unsigned int c, double v) {

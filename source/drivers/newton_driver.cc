@@ -97,9 +97,17 @@ namespace pdfem
     NewtonDriver::run(SystemInterface                               &system,
                       SystemInterface::Vector                       &u,
                       const std::function<void(const StepRecord &)> &on_step,
-                      StabilityInterface                            *stability)
+                      StabilityInterface                            *stability,
+                      const LoadDerivative &load_derivative)
     {
-      result                       = NewtonOutcome();
+      result = NewtonOutcome();
+      SystemInterface::Vector p0;
+      system.initialize_vector(p0);
+      system.apply_dirichlet(p0, 0.);
+      const auto free_part = [&](SystemInterface::Vector &v) {
+        system.apply_dirichlet(v, 0.);
+        v -= p0;
+      };
       SystemInterface::Vector last = u, previous = u;
       double                  t = 0., t_previous = 0.;
       const double            base  = 1. / std::max(1u, settings.load_steps);
@@ -116,6 +124,20 @@ namespace pdfem
             {
               u.add((t_new - t) / (t - t_previous), last);
               u.add(-(t_new - t) / (t - t_previous), previous);
+            }
+          else if (load_derivative)
+            {
+              // no secant yet: the tangent, u + (t_new - t) K^-1 dr/dt (under
+              // hard loading the prescribed values alone would stretch the
+              // bonds next to the boundary layer far into softening)
+              SystemInterface::Vector r, q, dq;
+              system.initialize_vector(r);
+              system.initialize_vector(q);
+              system.residual(u, t, r, true);
+              load_derivative(u, t, q);
+              system.solve_linear(dq, q);
+              if (std::isfinite(dq.l2_norm()))
+                u.add(t_new - t, dq);
             }
           system.apply_dirichlet(u, t_new);
           StepRecord record;
@@ -169,8 +191,100 @@ namespace pdfem
               dt *= settings.step_cut_factor;
               continue;
             }
-          // The smallest increment failed: unstable crack growth (or no
-          // equilibrium at all).
+          // The smallest increment failed. With loads linear in t, follow
+          // the equilibrium path by arc length from the last stable state
+          // (a snap-back under displacement control: the path turns back in
+          // t through unstable states) until it reaches a stable state
+          // beyond the failed load factor, the state the body jumps to;
+          // load control resumes there.
+          if (load_derivative && stability != nullptr &&
+              settings.stability_check && step > 0 && t > t_previous)
+            {
+              SystemInterface::Vector first_increment = last;
+              first_increment -= previous;
+              free_part(first_increment);
+              // Two tries. First a short arc, the last (smallest)
+              // increment: a longer one can jump from the fold onto other,
+              // unstable branches; easy steps lengthen it. If that path
+              // does not come back (it can wander along unstable branches),
+              // the last increment scaled to a full load step, which jumps
+              // across small snap-backs directly.
+              const double dl_short = first_increment.l2_norm();
+              const double dl_long  = dl_short * base / (t - t_previous);
+              bool         passed   = false;
+              double       lambda   = t;
+              for (const double dl0 : {dl_short, dl_long})
+                {
+                  SystemInterface::Vector increment = first_increment,
+                                          path_last = last;
+                  double dl                         = dl0;
+                  lambda                            = t;
+                  for (unsigned int k = 0, cuts = 0;
+                       k < settings.arc_length_steps && dl > 0.;)
+                    {
+                      StepRecord path;
+                      double     lam;
+                      if (!arc_step(system,
+                                    u,
+                                    lam,
+                                    path_last,
+                                    lambda,
+                                    increment,
+                                    dl,
+                                    load_derivative,
+                                    free_part,
+                                    path))
+                        {
+                          // next to the fold K_ff is nearly singular: the
+                          // corrector may need a much shorter arc
+                          if (++cuts > std::max(settings.max_step_cuts, 8u))
+                            break;
+                          dl *= 0.5;
+                          continue;
+                        }
+                      cuts = 0;
+                      ++k;
+                      ++result.n_path_states;
+                      // easy steps lengthen the arc: the unstable part of
+                      // the path can be long compared with the last step
+                      if (path.newton_iterations <= 3)
+                        dl *= 1.5;
+                      increment = u;
+                      increment -= path_last;
+                      free_part(increment);
+                      path_last         = u;
+                      lambda            = lam;
+                      result.last_check = stability->check_stability();
+                      if (!result.last_check.stable())
+                        ++result.n_unstable_states;
+                      else if (lambda > t_new)
+                        {
+                          passed = true;
+                          break;
+                        }
+                    }
+                  if (passed)
+                    break;
+                }
+              if (passed)
+                {
+                  ++result.n_snap_backs;
+                  ++step;
+                  previous                = u;
+                  t_previous              = lambda;
+                  t                       = lambda;
+                  last                    = u;
+                  result.last_stable_load = t;
+                  record.step             = step;
+                  record.time = record.load_factor = t;
+                  on_step(record);
+                  level     = 0;
+                  dt        = base;
+                  successes = 0;
+                  continue;
+                }
+            }
+          // unstable crack growth (or no equilibrium at all)
           u                   = last;
           result.failure_load = t_new;
           std::ostringstream s;
@@ -180,6 +294,79 @@ namespace pdfem
           throw RunFailure("unstable", s.str());
         }
     }
+    bool
+    NewtonDriver::arc_step(
+      SystemInterface                                      &system,
+      SystemInterface::Vector                              &u,
+      double                                               &lam,
+      const SystemInterface::Vector                        &last,
+      const double                                          lambda,
+      const SystemInterface::Vector                        &increment,
+      const double                                          dl,
+      const LoadDerivative                                 &load_derivative,
+      const std::function<void(SystemInterface::Vector &)> &free_part,
+      StepRecord                                           &record)
+    {
+      SystemInterface::Vector r, dq, dr, w, q;
+      system.initialize_vector(r);
+      system.initialize_vector(dq);
+      system.initialize_vector(dr);
+      system.initialize_vector(q);
+      // predictor along K^-1 dr/dt (K of the last converged state)
+      system.residual(last, lambda, r, true);
+      load_derivative(last, lambda, q);
+      system.solve_linear(dq, q);
+      const double sign = (dq * increment) >= 0. ? 1. : -1.;
+      const double dlam = sign * dl / dq.l2_norm();
+      u                 = last;
+      u.add(dlam, dq);
+      lam = lambda + dlam;
+      system.apply_dirichlet(u, lam);
+      double ref = 0.;
+      for (unsigned int it = 0; it <= settings.max_iterations; ++it)
+        {
+          const double norm = system.residual(u, lam, r, true);
+          if (!std::isfinite(norm))
+            return false;
+          const double scale = std::max(system.force_scale(), ref);
+          if (it == 0)
+            ref = std::max(norm, system.force_scale());
+          record.relative_residual = scale > 0. ? norm / scale : norm;
+          if (norm <= settings.residual_tolerance * scale)
+            return true;
+          if (it == settings.max_iterations)
+            return false;
+          load_derivative(u, lam, q);
+          system.solve_linear(dr, r);
+          system.solve_linear(dq, q);
+          // |Delta u + dr + dlam dq| = dl, Delta u = u - last (free DoFs:
+          // dr and dq vanish on the prescribed ones)
+          w = u;
+          w -= last;
+          w += dr;
+          free_part(w);
+          const double a = dq * dq, b = 2. * (dq * w), c = w * w - dl * dl;
+          const double disc = b * b - 4. * a * c;
+          if (!(disc >= 0.) || !(a > 0.))
+            return false;
+          const double x1 = (-b + std::sqrt(disc)) / (2. * a);
+          const double x2 = (-b - std::sqrt(disc)) / (2. * a);
+          // the root that keeps the increment closest to the last one
+          w.add(x1, dq);
+          const double c1 = w * increment;
+          w.add(x2 - x1, dq);
+          const double c2 = w * increment;
+          const double d  = c1 >= c2 ? x1 : x2;
+          u += dr;
+          u.add(d, dq);
+          lam += d;
+          system.apply_dirichlet(u, lam);
+          ++record.newton_iterations;
+          record.linear_iterations += 2;
+        }
+      return false;
+    }
+
     void
     NewtonDriver::run_arc_length(
       SystemInterface                                    &system,
@@ -190,22 +377,64 @@ namespace pdfem
       StabilityInterface                                 *stability,
       const std::function<void(const StabilityReport &)> &on_check)
     {
+      run_arc_length(
+        system,
+        u,
+        [&q](const SystemInterface::Vector &,
+             double,
+             SystemInterface::Vector &dr_dt) { dr_dt = q; },
+        max_steps,
+        on_step,
+        stability,
+        on_check);
+    }
+
+    void
+    NewtonDriver::run_arc_length(
+      SystemInterface                                    &system,
+      SystemInterface::Vector                            &u,
+      const LoadDerivative                               &load_derivative,
+      const unsigned int                                  max_steps,
+      const std::function<void(const StepRecord &)>      &on_step,
+      StabilityInterface                                 *stability,
+      const std::function<void(const StabilityReport &)> &on_check)
+    {
       result = NewtonOutcome();
-      SystemInterface::Vector r, dq, dr, w, last = u, increment;
+      SystemInterface::Vector r, dq, dr, w, q, last = u, increment;
       system.initialize_vector(r);
       system.initialize_vector(dq);
       system.initialize_vector(dr);
+      system.initialize_vector(q);
+      // The constraint measures the free DoFs only: zero the prescribed
+      // entries of v (apply_dirichlet writes u_p(0) into them, p0 holds
+      // u_p(0) there and 0 elsewhere).
+      SystemInterface::Vector p0;
+      system.initialize_vector(p0);
+      system.apply_dirichlet(p0, 0.);
+      const auto free_part = [&](SystemInterface::Vector &v) {
+        system.apply_dirichlet(v, 0.);
+        v -= p0;
+      };
       // ---- first step: load control
       StepRecord   first;
       const double t0 = 1. / std::max(1u, settings.load_steps);
       first.step      = 1;
       first.time = first.load_factor = t0;
+      // tangent predictor u + t0 K^-1 dr/dt: under hard loading, the
+      // prescribed values alone would stretch the bonds next to the
+      // boundary layer far into softening
+      system.residual(u, 0., r, true);
+      load_derivative(u, 0., q);
+      system.solve_linear(dq, q);
+      u.add(t0, dq);
+      system.apply_dirichlet(u, t0);
       if (!solve_step(system, u, t0, first))
         throw RunFailure("diverged",
                          "arc length: the first, load-controlled step "
                          "does not converge");
       increment = u;
       increment -= last;
+      free_part(increment);
       double dl = increment.l2_norm(), lambda = t0;
       last                    = u;
       result.last_stable_load = lambda;
@@ -216,58 +445,19 @@ namespace pdfem
       unsigned int level = 0;
       for (unsigned int step = 2; step <= max_steps && lambda < 1.;)
         {
-          // predictor along K^-1 q (K of the last converged state)
-          system.residual(last, lambda, r, true);
-          system.solve_linear(dq, q);
-          double sign = (dq * increment) >= 0. ? 1. : -1.;
-          double dlam = sign * dl / dq.l2_norm();
-          u           = last;
-          u.add(dlam, dq);
-          double     lam = lambda + dlam;
           StepRecord record;
           record.step = step;
-          bool   ok   = false;
-          double ref  = 0.;
-          for (unsigned int it = 0; it <= settings.max_iterations; ++it)
-            {
-              const double norm = system.residual(u, lam, r, true);
-              if (!std::isfinite(norm))
-                break;
-              const double scale = std::max(system.force_scale(), ref);
-              if (it == 0)
-                ref = std::max(norm, system.force_scale());
-              record.relative_residual = scale > 0. ? norm / scale : norm;
-              if (norm <= settings.residual_tolerance * scale)
-                {
-                  ok = true;
-                  break;
-                }
-              if (it == settings.max_iterations)
-                break;
-              system.solve_linear(dr, r);
-              system.solve_linear(dq, q);
-              // |Delta u + dr + dlam dq| = dl, Delta u = u - last
-              w = u;
-              w -= last;
-              w += dr;
-              const double a = dq * dq, b = 2. * (dq * w), c = w * w - dl * dl;
-              const double disc = b * b - 4. * a * c;
-              if (!(disc >= 0.) || !(a > 0.))
-                break;
-              const double x1 = (-b + std::sqrt(disc)) / (2. * a);
-              const double x2 = (-b - std::sqrt(disc)) / (2. * a);
-              // the root that keeps the increment closest to the last one
-              w.add(x1, dq);
-              const double c1 = w * increment;
-              w.add(x2 - x1, dq);
-              const double c2 = w * increment;
-              const double d  = c1 >= c2 ? x1 : x2;
-              u += dr;
-              u.add(d, dq);
-              lam += d;
-              ++record.newton_iterations;
-              record.linear_iterations += 2;
-            }
+          double     lam;
+          const bool ok = arc_step(system,
+                                   u,
+                                   lam,
+                                   last,
+                                   lambda,
+                                   increment,
+                                   dl,
+                                   load_derivative,
+                                   free_part,
+                                   record);
           if (!ok)
             {
               if (level == settings.max_step_cuts)
@@ -286,6 +476,7 @@ namespace pdfem
           level     = 0;
           increment = u;
           increment -= last;
+          free_part(increment);
           last        = u;
           lambda      = lam;
           record.time = record.load_factor = lambda;

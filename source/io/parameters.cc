@@ -538,7 +538,8 @@ namespace pdfem
         "rnp); a step that cannot be completed stops the run with exit "
         "state 'unstable'. arc length: the load factor becomes an unknown "
         "(Crisfield's arc-length continuation), so the path is followed "
-        "through limit points; soft loading linear in t only (rnp). "
+        "through limit points and snap-backs; loads linear in t only: "
+        "forces t q, prescribed values u_p(0) + t w, or both (rnp). "
         "explicit: central difference with lumped mass in physical time t "
         "(specs/004 §2.3), automatic stable time step. newmark: implicit "
         "Newmark (beta, gamma) in physical time t (specs/004 §2.4), the "
@@ -887,6 +888,16 @@ namespace pdfem
                         Selection("analytic|finite difference"),
                         "analytic (eq. 33-34 corrected) or central finite "
                         "differences of the nodal forces (for comparison).");
+      prm.declare_entry(
+        "Interface energy",
+        "full bonds",
+        Selection("full bonds|partition"),
+        "With FE cells around the RNP region and Family members = all "
+        "nodes: full bonds: every bond counts fully (the FE cells next to "
+        "the interface are stiffened by the bonds reaching into them); "
+        "partition: each bond is weighted by the mean PD share of its two "
+        "nodes' volumes, so that bonds and FE cells split the energy "
+        "(doc/theory.md, RNP coupling; smaller ghost forces).");
       prm.leave_subsection();
       prm.leave_subsection();
     }
@@ -896,15 +907,16 @@ namespace pdfem
     {
       prm.enter_subsection("Peridynamics");
       prm.enter_subsection("RNP");
-      calibration     = prm.get("Calibration");
-      C               = prm.get_double("C");
-      beta            = prm.get_double("beta");
-      fracture_energy = prm.get_double("Fracture energy");
-      influence       = prm.get("Influence function");
-      force_scaling   = prm.get("Force scaling");
-      nodal_volumes   = prm.get("Nodal volumes");
-      dirichlet_layer = prm.get_double("Dirichlet layer");
-      tangent         = prm.get("Tangent");
+      calibration      = prm.get("Calibration");
+      C                = prm.get_double("C");
+      beta             = prm.get_double("beta");
+      fracture_energy  = prm.get_double("Fracture energy");
+      influence        = prm.get("Influence function");
+      force_scaling    = prm.get("Force scaling");
+      nodal_volumes    = prm.get("Nodal volumes");
+      dirichlet_layer  = prm.get_double("Dirichlet layer");
+      tangent          = prm.get("Tangent");
+      interface_energy = prm.get("Interface energy");
       prm.leave_subsection();
       prm.leave_subsection();
     }

@@ -203,6 +203,25 @@ namespace pdfem
                   pd_node[k] = 1;
               }
           }
+        // Energy partition: the PD share of each node's volume (1 inside the
+        // RNP region, 0 in the FE region, between at the interface).
+        std::vector<double> energy_weight;
+        if (rp.interface_energy == "partition")
+          {
+            std::vector<double> pd_share(x.size(), 0.), all(x.size(), 0.);
+            for (const auto &cell : tria.active_cell_iterators())
+              for (const unsigned int v : cell->vertex_indices())
+                {
+                  const int    k     = node_of[cell->vertex_index(v)];
+                  const double share = cell->measure() / cell->n_vertices();
+                  all[k] += share;
+                  if (setup.cell_is_pd[cell->active_cell_index()])
+                    pd_share[k] += share;
+                }
+            energy_weight.resize(x.size());
+            for (unsigned int i = 0; i < x.size(); ++i)
+              energy_weight[i] = all[i] > 0. ? pd_share[i] / all[i] : 0.;
+          }
         if (rp.nodal_volumes == "uniform")
           for (unsigned int i = 0; i < x.size(); ++i)
             volume[i] = (pd_node[i] || fe_members) ? std::pow(h, dim) : 0.;
@@ -409,7 +428,128 @@ namespace pdfem
                                      Coupling::RNPTangent::finite_difference,
           pd_node,
           elements,
-          fe_members);
+          fe_members,
+          energy_weight);
+        // ---- patch test of the RNP-FE coupling (runs with FE cells): for
+        // each unit strain mode eps, u = eps (x - x_c) prescribed on the
+        // boundary (FE nodes on it, PD nodes within a horizon of it, so that
+        // the PD surface effect is not counted), the rest solved in the
+        // linear regime, without pre-cracks. An exact coupling reproduces
+        // the affine field; the error is the ghost forces' doing
+        // (theory.md §8.3).
+        struct PatchTest
+        {
+          unsigned int modes = 0, held_nodes = 0;
+          double       error = 0., ghost_force = 0.;
+        } patch;
+        if (!elements.dofs.empty())
+          {
+            std::vector<Point<dim>> on_boundary;
+            for (const auto &face : tria.active_face_iterators())
+              if (face->at_boundary())
+                for (const unsigned int v : face->vertex_indices())
+                  on_boundary.push_back(face->vertex(v));
+            Point<dim> lo = x[0], hi = x[0];
+            for (const auto &p : x)
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  lo[c] = std::min(lo[c], p[c]);
+                  hi[c] = std::max(hi[c], p[c]);
+                }
+            const Point<dim>                         centre = 0.5 * (lo + hi);
+            typename Coupling::RNPSystem<dim>::Loads patch_loads;
+            patch_loads.constrained.assign(n_dofs, 0);
+            const double r2_fe = 1e-24 * h * h;
+            const double r2 =
+              model.horizon * model.horizon * (1. + 1e-10) + r2_fe;
+            for (unsigned int i = 0; i < x.size(); ++i)
+              for (const auto &p : on_boundary)
+                if (x[i].distance_square(p) <= (pd_node[i] ? r2 : r2_fe))
+                  {
+                    for (unsigned int c = 0; c < dim; ++c)
+                      patch_loads.constrained[dim * i + c] = 1;
+                    ++patch.held_nodes;
+                    break;
+                  }
+            // linear regime: bond r = sqrt|xi| S <= 1e-4 r_c
+            const double scale =
+              1e-4 / std::sqrt(2. * model.beta) / std::sqrt(model.horizon);
+            auto strain = std::make_shared<Tensor<2, dim>>();
+            patch_loads.prescribed =
+              [strain, x, centre](double, std::vector<double> &u) {
+                for (unsigned int i = 0; i < x.size(); ++i)
+                  {
+                    const Tensor<1, dim> v = *strain * (x[i] - centre);
+                    for (unsigned int c = 0; c < dim; ++c)
+                      u[dim * i + c] = v[c];
+                  }
+              };
+            patch_loads.external_force = [](double, std::vector<double> &f) {
+              std::fill(f.begin(), f.end(), 0.);
+            };
+            Coupling::RNPSystem<dim> patch_system(
+              x,
+              volume,
+              model,
+              {},
+              patch_loads,
+              Coupling::RNPTangent::analytic,
+              pd_node,
+              elements,
+              fe_members,
+              energy_weight);
+            const double lambda = settings.material.lambda();
+            const double mu     = settings.material.mu();
+            for (unsigned int a = 0; a < dim; ++a)
+              for (unsigned int b = a; b < dim; ++b)
+                {
+                  *strain         = Tensor<2, dim>();
+                  (*strain)[a][b] = (*strain)[b][a] = scale;
+                  Tensor<2, dim> sigma              = 2. * mu * *strain;
+                  for (unsigned int c = 0; c < dim; ++c)
+                    sigma[c][c] += lambda * trace(*strain);
+                  TrilinosWrappers::MPI::Vector pu, pr, pdu;
+                  patch_system.initialize_vector(pu);
+                  patch_system.apply_dirichlet(pu, 0.);
+                  double u_max = 0.;
+                  for (unsigned int i = 0; i < x.size(); ++i)
+                    u_max = std::max(u_max, (*strain * (x[i] - centre)).norm());
+                  // ghost forces: f_int of the affine field on the free nodes
+                  {
+                    std::vector<double> affine(n_dofs), f;
+                    patch_loads.prescribed(0., affine);
+                    patch_system.internal_force(affine, f);
+                    for (unsigned int i = 0; i < x.size(); ++i)
+                      if (!patch_loads.constrained[dim * i])
+                        {
+                          double g = 0.;
+                          for (unsigned int c = 0; c < dim; ++c)
+                            g += f[dim * i + c] * f[dim * i + c];
+                          patch.ghost_force =
+                            std::max(patch.ghost_force,
+                                     std::sqrt(g) /
+                                       (sigma.norm() * std::pow(h, dim - 1)));
+                        }
+                  }
+                  for (unsigned int it = 0; it < 2; ++it)
+                    {
+                      patch_system.residual(pu, 0., pr, true);
+                      patch_system.solve_linear(pdu, pr);
+                      pu += pdu;
+                    }
+                  for (unsigned int i = 0; i < x.size(); ++i)
+                    {
+                      const Tensor<1, dim> v = *strain * (x[i] - centre);
+                      double               e = 0.;
+                      for (unsigned int c = 0; c < dim; ++c)
+                        e +=
+                          (pu[dim * i + c] - v[c]) * (pu[dim * i + c] - v[c]);
+                      patch.error = std::max(patch.error, std::sqrt(e) / u_max);
+                    }
+                  ++patch.modes;
+                }
+          }
+
         auto &timings          = setup.timings;
         timings["setup"]       = seconds_since(setup.setup_start);
         std::ostream *progress = options.quiet ? nullptr : &std::cout;
@@ -422,22 +562,21 @@ namespace pdfem
                     << " cut by pre-cracks), horizon " << model.horizon
                     << ", C = " << model.C << ", beta = " << model.beta
                     << ", band " << system.matrix().bandwidth() << std::endl;
+        if (progress && patch.modes > 0)
+          *progress << "  patch test of the RNP-FE coupling (" << patch.modes
+                    << " strain modes, " << patch.held_nodes
+                    << " boundary nodes held): max error " << patch.error
+                    << " of the affine field, ghost force " << patch.ghost_force
+                    << " sigma h^(d-1)" << std::endl;
 
         // ---- history
-        std::vector<std::string> columns = {"step",
-                                            "time",
-                                            "load_factor",
-                                            "newton_iterations",
-                                            "linear_iterations",
-                                            "residual",
-                                            "n_broken_bonds",
-                                            "max_damage",
-                                            "softened_nodes",
-                                            "softened_x_max"};
-        for (const auto &set : set_names)
-          for (const auto &c : component_names<dim>())
-            columns.push_back("reaction_" + IO::History::column_name(set) +
-                              "_" + c);
+        // The common columns first (scene_internal.h, design.md), then the
+        // RNP ones: softened nodes (d > 1), how far they reach in x, and
+        // whether the state is stable (1), not (0), or was not checked (-1).
+        std::vector<std::string> columns =
+          base_history_columns<dim>(set_names, false);
+        for (const char *c : {"softened_nodes", "softened_x_max", "stable"})
+          columns.push_back(c);
         for (const auto &c : component_names<dim>())
           columns.push_back("max_abs_displacement_" + c);
         // 2D pre-cracks: the tip p1 advanced to the farthest softened node
@@ -503,7 +642,15 @@ namespace pdfem
         std::vector<double> last_u(n_dofs, 0.);
         double              last_load = 0., peak_load = 0.;
         unsigned int        n_steps = 0;
-        const auto          on_step = [&](const Drivers::StepRecord &record) {
+        // -1: not checked; the Newton driver records stable states only,
+        // the arc length driver reports every check before the step
+        double last_stable =
+          setup.driver.type == "newton" && setup.driver.stability_check ? 1. :
+                                                                          -1.;
+        const auto on_check = [&](const Drivers::StabilityReport &report) {
+          last_stable = report.stable() ? 1. : 0.;
+        };
+        const auto on_step = [&](const Drivers::StepRecord &record) {
           n_steps = record.step;
           last_u.assign(u.begin(), u.end());
           last_load = record.load_factor;
@@ -521,12 +668,13 @@ namespace pdfem
                                      double(record.linear_iterations),
                                      record.relative_residual,
                                      0.,
-                                     dmax,
-                                     double(n_soft),
-                                     soft_x};
+                                     dmax};
           for (const auto &R : reactions())
             for (unsigned int c = 0; c < dim; ++c)
               row.push_back(R[c]);
+          row.push_back(n_soft);
+          row.push_back(soft_x);
+          row.push_back(last_stable);
           for (unsigned int c = 0; c < dim; ++c)
             {
               double m = 0.;
@@ -556,46 +704,76 @@ namespace pdfem
         start = clock::now();
         try
           {
+            // f_ext(t) = t q and prescribed values affine in t,
+            // u_p(t) = u_p(0) + t w: soft loading (w = 0), hard loading
+            // (q = 0) or both. d r / d t = q - K_fp(u) w on the free
+            // DoFs.
+            std::vector<double> f0(n_dofs), f1(n_dofs), fh(n_dofs),
+              u0(n_dofs, 0.), u1(n_dofs, 0.), uh(n_dofs, 0.);
+            loads.external_force(0., f0);
+            loads.external_force(1., f1);
+            loads.external_force(0.5, fh);
+            loads.prescribed(0., u0);
+            loads.prescribed(1., u1);
+            loads.prescribed(0.5, uh);
+            double fmax = 0., fdev = 0., umax = 0., udev = 0.;
+            auto   w = std::make_shared<std::vector<double>>(n_dofs, 0.);
+            for (unsigned int d = 0; d < n_dofs; ++d)
+              {
+                fmax = std::max(fmax, std::abs(f1[d]));
+                fdev = std::max(
+                  {fdev, std::abs(f0[d]), std::abs(fh[d] - 0.5 * f1[d])});
+                if (loads.constrained[d])
+                  {
+                    (*w)[d] = u1[d] - u0[d];
+                    umax    = std::max(umax, std::abs((*w)[d]));
+                    udev =
+                      std::max(udev, std::abs(uh[d] - 0.5 * (u0[d] + u1[d])));
+                  }
+              }
+            const bool linear_in_t =
+              !(fdev > 1e-12 * fmax || udev > 1e-12 * umax ||
+                (fmax == 0. && umax == 0.));
+            auto q = std::make_shared<std::vector<double>>(n_dofs, 0.);
+            for (unsigned int d = 0; d < n_dofs; ++d)
+              if (!loads.constrained[d])
+                (*q)[d] = f1[d];
+            Drivers::NewtonDriver::LoadDerivative dr_dt;
+            if (linear_in_t)
+              dr_dt =
+                [&system, q, w, umax, n_dofs, constrained = loads.constrained](
+                  const TrilinosWrappers::MPI::Vector &u,
+                  double,
+                  TrilinosWrappers::MPI::Vector &out) {
+                  system.initialize_vector(out);
+                  std::vector<double> Kw(n_dofs, 0.);
+                  if (umax > 0.)
+                    system.tangent_product(
+                      std::vector<double>(u.begin(), u.end()), *w, Kw);
+                  for (unsigned int d = 0; d < n_dofs; ++d)
+                    if (!constrained[d])
+                      out[d] = (*q)[d] - Kw[d];
+                  out.compress(VectorOperation::insert);
+                };
             if (setup.driver.type == "arc length")
               {
-                // f_ext(t) = t q and prescribed values independent of t
-                std::vector<double> f0(n_dofs), f1(n_dofs), fh(n_dofs),
-                  u0(n_dofs, 0.), u1(n_dofs, 0.);
-                loads.external_force(0., f0);
-                loads.external_force(1., f1);
-                loads.external_force(0.5, fh);
-                loads.prescribed(0., u0);
-                loads.prescribed(1., u1);
-                double fmax = 0., fdev = 0., udev = 0.;
-                for (unsigned int d = 0; d < n_dofs; ++d)
-                  {
-                    fmax = std::max(fmax, std::abs(f1[d]));
-                    fdev = std::max(
-                      {fdev, std::abs(f0[d]), std::abs(fh[d] - 0.5 * f1[d])});
-                    udev = std::max(udev, std::abs(u1[d] - u0[d]));
-                  }
-                if (fdev > 1e-12 * fmax || udev > 0. || fmax == 0.)
+                if (!linear_in_t)
                   throw InputError(
                     prm.file,
                     "Driver/Type",
-                    "arc length needs loads proportional to t (tractions "
-                    "and body force t q, prescribed values independent of t)",
+                    "arc length needs loads linear in t (tractions and body "
+                    "force t q, prescribed values u_p(0) + t w)",
                     "such loads, or the newton driver");
-                TrilinosWrappers::MPI::Vector q;
-                system.initialize_vector(q);
-                for (unsigned int d = 0; d < n_dofs; ++d)
-                  if (!loads.constrained[d])
-                    q[d] = f1[d];
-                q.compress(VectorOperation::insert);
                 Drivers::NewtonDriver driver(setup.driver);
                 try
                   {
                     driver.run_arc_length(system,
                                           u,
-                                          q,
+                                          dr_dt,
                                           setup.driver.arc_length_steps,
                                           on_step,
-                                          &system);
+                                          &system,
+                                          on_check);
                   }
                 catch (...)
                   {
@@ -613,7 +791,16 @@ namespace pdfem
                 Drivers::NewtonDriver driver(setup.driver);
                 try
                   {
-                    driver.run(system, u, on_step, &system);
+                    // The snap-back continuation under hard loading only: under
+                    // force control a fold is the end of quasi-static growth
+                    // (the jump is the dynamic, unstable growth).
+                    driver.run(system,
+                               u,
+                               on_step,
+                               &system,
+                               umax > 0. ?
+                                 dr_dt :
+                                 Drivers::NewtonDriver::LoadDerivative());
                   }
                 catch (...)
                   {
@@ -688,38 +875,52 @@ namespace pdfem
         std::ofstream  out(setup.out_dir + "/summary.json");
         IO::JsonWriter json(out);
         json.begin_object();
-        json.value("pdfem_version", PDFEM_VERSION);
-        json.value("scene", setup.name);
-        json.value("input_file", setup.file);
-        json.value("dimension", static_cast<unsigned long>(dim));
-        json.value("ranks", 1ul);
-        json.value("exit_state", exit_state);
-        json.value("message", message);
-        json.begin_object("problem");
-        json.value("nodes", static_cast<unsigned long>(x.size()));
-        json.value("pd_nodes",
-                   static_cast<unsigned long>(
-                     std::count(pd_node.begin(), pd_node.end(), 1)));
+        {
+          // the problem sizes every driver writes (scene_internal.h); the
+          // RNP-only ones go to "rnp"
+          Coupling::ProblemSize size;
+          size.n_nodes    = x.size();
+          size.n_pd_nodes = std::count(pd_node.begin(), pd_node.end(), 1);
+          std::vector<std::uint8_t> in_fe(x.size(), 0);
+          for (const auto &dofs : elements.dofs)
+            for (const unsigned int d : dofs)
+              in_fe[d / dim] = 1;
+          for (unsigned int i = 0; i < x.size(); ++i)
+            size.n_interface_nodes += pd_node[i] && in_fe[i];
+          size.n_cells    = tria.n_active_cells();
+          size.n_pd_cells = tria.n_active_cells() - elements.dofs.size();
+          size.n_dofs     = n_dofs;
+          size.n_bonds    = system.n_bonds();
+          size.n_matrix_entries =
+            system.matrix().size() * (system.matrix().bandwidth() + 1);
+          Coupling::ProblemSize final_size = size;
+          final_size.n_decoupled_nodes     = system.n_decoupled_nodes();
+          write_summary_header(
+            json, setup, comm, exit_state, message, size, final_size);
+        }
+        json.begin_object("rnp");
         json.value("fe_cells",
                    static_cast<unsigned long>(elements.dofs.size()));
-        json.value("cells", static_cast<unsigned long>(tria.n_active_cells()));
-        json.value("dofs", static_cast<unsigned long>(n_dofs));
-        json.value("bonds", static_cast<unsigned long>(system.n_bonds()));
         json.value("cut_bonds",
                    static_cast<unsigned long>(system.n_cut_bonds()));
-        json.value("broken_bonds", 0ul);
-        json.value("decoupled_nodes",
-                   static_cast<unsigned long>(system.n_decoupled_nodes()));
         json.value("bandwidth",
                    static_cast<unsigned long>(system.matrix().bandwidth()));
-        json.end_object();
-        json.begin_object("rnp");
         json.value("C", model.C);
         json.value("beta", model.beta);
         json.value("horizon", model.horizon);
         json.value("spacing", h);
         json.value("r_c", 1. / std::sqrt(2. * model.beta));
         json.end_object();
+        if (patch.modes > 0)
+          {
+            json.begin_object("patch_test");
+            json.value("strain_modes", static_cast<unsigned long>(patch.modes));
+            json.value("held_nodes",
+                       static_cast<unsigned long>(patch.held_nodes));
+            json.value("max_relative_error", patch.error);
+            json.value("max_relative_ghost_force", patch.ghost_force);
+            json.end_object();
+          }
         json.value("steps", static_cast<unsigned long>(n_steps));
         json.begin_object("stability");
         json.value("last_stable_load_factor", outcome.last_stable_load);
@@ -728,6 +929,10 @@ namespace pdfem
         json.value("step_cuts", static_cast<unsigned long>(outcome.n_cuts));
         json.value("unstable_states",
                    static_cast<unsigned long>(outcome.n_unstable_states));
+        json.value("snap_backs",
+                   static_cast<unsigned long>(outcome.n_snap_backs));
+        json.value("path_states",
+                   static_cast<unsigned long>(outcome.n_path_states));
         json.value("negative_eigenvalues",
                    static_cast<unsigned long>(outcome.last_check.n_negative));
         json.value("smallest_relative_pivot",

@@ -238,6 +238,38 @@ namespace
             norm += K[e] * K[e];
           }
         EXPECT_LT(std::sqrt(diff / norm), 1e-6);
+
+        // K v without assembling K (arc length under hard loading): against
+        // the central difference of f_int along v, and against the dense K
+        std::vector<double> v(N), Kv, fp, fm, w = u;
+        double              scale = 0.;
+        for (unsigned int k = 0; k < N; ++k)
+          {
+            v[k]  = std::sin(1.7 * k + 0.3);
+            scale = std::max(scale, std::abs(u[k]));
+          }
+        system.tangent_product(u, v, Kv);
+        const double tau = 1e-6 * scale;
+        for (unsigned int k = 0; k < N; ++k)
+          w[k] = u[k] + tau * v[k];
+        system.internal_force(w, fp);
+        for (unsigned int k = 0; k < N; ++k)
+          w[k] = u[k] - tau * v[k];
+        system.internal_force(w, fm);
+        double diff_fd = 0., diff_dense = 0., norm_kv = 0.;
+        for (unsigned int r = 0; r < N; ++r)
+          {
+            double dense = 0.;
+            for (unsigned int c = 0; c < N; ++c)
+              dense += K[r * N + c] * v[c];
+            const double fd = (fp[r] - fm[r]) / (2. * tau);
+            diff_fd += (fd - Kv[r]) * (fd - Kv[r]);
+            diff_dense += (dense - Kv[r]) * (dense - Kv[r]);
+            norm_kv += Kv[r] * Kv[r];
+          }
+        EXPECT_GT(norm_kv, 0.);
+        EXPECT_LT(std::sqrt(diff_fd / norm_kv), 1e-6);
+        EXPECT_LT(std::sqrt(diff_dense / norm_kv), 1e-12);
       }
   }
 
@@ -316,7 +348,42 @@ namespace
                 norm += K[e] * K[e];
               }
             EXPECT_LT(std::sqrt(diff / norm), 1e-6);
+            // K v with the FE matrices included
+            const unsigned int  N = system.n_dofs();
+            std::vector<double> v(N), Kv;
+            for (unsigned int k = 0; k < N; ++k)
+              v[k] = std::cos(0.9 * k);
+            system.tangent_product(u, v, Kv);
+            double d2 = 0., n2 = 0.;
+            for (unsigned int r = 0; r < N; ++r)
+              {
+                double dense = 0.;
+                for (unsigned int c = 0; c < N; ++c)
+                  dense += K[std::size_t(r) * N + c] * v[c];
+                d2 += (dense - Kv[r]) * (dense - Kv[r]);
+                n2 += dense * dense;
+              }
+            EXPECT_LT(std::sqrt(d2 / n2), 1e-12);
           }
+        // the energy partition (bonds weighted by the mean PD share of their
+        // nodes) keeps the tangent exact
+        {
+          std::vector<double> w(x.size());
+          for (unsigned int i = 0; i < x.size(); ++i)
+            w[i] = pd[i] ? (x[i][0] > 0.25 ? 0.5 : 1.) : 0.;
+          RNPSystem<2> weighted(
+            x, V, s, {}, {}, RNPTangent::analytic, pd, elements, fe_members, w);
+          const std::vector<double> u = state(weighted, 2.5, 9);
+          EXPECT_LT(tangent_error(weighted, u), 1e-6);
+          // and it scales the bonds: f_int differs from the full bonds'
+          std::vector<double> f_full, f_weighted;
+          system.internal_force(u, f_full);
+          weighted.internal_force(u, f_weighted);
+          double diff = 0.;
+          for (std::size_t k = 0; k < f_full.size(); ++k)
+            diff = std::max(diff, std::abs(f_full[k] - f_weighted[k]));
+          EXPECT_GT(diff, 0.);
+        }
         // the PD-FE bonds exist only with FE members
         unsigned int fe_bonds = 0;
         for (unsigned int i = 0; i < x.size(); ++i)

@@ -73,7 +73,12 @@ namespace pdfem
       /// @p cut(x_i, x_j): is the bond cut by a pre-crack? @p pd_node: the
       /// nodes that own families (empty: all); @p elements: FE cells;
       /// @p fe_members: non-PD nodes are family members too (bonds PD-FE
-      /// within the horizon, acting on both nodes).
+      /// within the horizon, acting on both nodes). @p energy_weight: per
+      /// node the share w_i of its volume that is PD material (1: all PD,
+      /// 0: FE); empty: 1 everywhere. Each bond's energy, force and
+      /// stiffness are scaled by (w_i + w_j) / 2, so that the bonds count
+      /// only the energy of the PD material they stand for, not that of the
+      /// FE cells next to them (theory.md §8.3, energy partition).
       RNPSystem(const std::vector<dealii::Point<dim>>                 &x,
                 const std::vector<double>                             &volume,
                 const PDModels::RNPSettings                           &settings,
@@ -82,8 +87,9 @@ namespace pdfem
                 const Loads                                           &loads,
                 RNPTangent                       tangent = RNPTangent::analytic,
                 const std::vector<std::uint8_t> &pd_node = {},
-                const LinearElements            &elements   = {},
-                bool                             fe_members = false);
+                const LinearElements            &elements      = {},
+                bool                             fe_members    = false,
+                const std::vector<double>       &energy_weight = {});
 
       // ---- Drivers::SystemInterface
       void
@@ -154,6 +160,18 @@ namespace pdfem
       internal_force(const std::vector<double> &u,
                      std::vector<double>       &f) const;
 
+      /**
+       * K(u) v on every DoF (no constraints), analytic: the bonds' blocks
+       * a_ij of eq. (34) (corrected, theory.md §8.2) and the FE matrices,
+       * without assembling K. The arc-length continuation under hard
+       * loading needs it for d r / d t = -K_fp d u_p / d t: how the
+       * residual on the free DoFs changes with the prescribed values.
+       */
+      void
+      tangent_product(const std::vector<double> &u,
+                      const std::vector<double> &v,
+                      std::vector<double>       &Kv) const;
+
       /// K(u) on every DoF (no constraints), dense row-major; small systems.
       void
       dense_tangent(const std::vector<double> &u,
@@ -208,8 +226,10 @@ namespace pdfem
       // families, CSR, symmetric (j in F(i) iff i in F(j))
       std::vector<std::size_t>  offsets;
       std::vector<unsigned int> members;
-      std::size_t               n_cut       = 0;
-      unsigned int              n_decoupled = 0;
+      // per bond (as members): (w_i + w_j) / 2 of the energy partition
+      std::vector<double> weight;
+      std::size_t         n_cut       = 0;
+      unsigned int        n_decoupled = 0;
       // free DoF -> band row (-1: constrained)
       std::vector<long>   band_row;
       Solvers::BandedLDLT K;

@@ -57,6 +57,10 @@ namespace pdfem
       StabilityReport last_check;
       /// Converged states rejected because they were not stable.
       unsigned int n_unstable_states = 0;
+      /// Load control: folds passed by following the path (snap-backs).
+      unsigned int n_snap_backs = 0;
+      /// Load control: states on those paths (stable or not).
+      unsigned int n_path_states = 0;
     };
 
     /**
@@ -88,15 +92,34 @@ namespace pdfem
     class NewtonDriver
     {
     public:
+      /// d r / d t on the free DoFs at (u, t), r = f_ext - f_int: q for
+      /// f_ext = t q, and -K_fp(u) d u_p / d t for prescribed values that
+      /// move with t (hard loading).
+      using LoadDerivative =
+        std::function<void(const SystemInterface::Vector &u,
+                           double                         t,
+                           SystemInterface::Vector       &dr_dt)>;
+
       explicit NewtonDriver(const Parameters::Driver &settings);
 
-      /// @p u: initial guess in, last stable state out. @p stability may
-      /// be null (no stability check).
+      /**
+       * @p u: initial guess in, last stable state out. @p stability may be
+       * null (no stability check). With @p load_derivative (loads linear
+       * in t) a step that fails with the smallest increment is not the
+       * end: the path is followed by arc length (as run_arc_length, the
+       * last increment scaled to a full step as the arc length, at most
+       * `Arc length steps`) until it reaches a stable state beyond the
+       * failed load factor -- under displacement control the state the
+       * body snaps to past a snap-back, where the path turns back in t --
+       * and load control resumes there; only that state is reported
+       * (on_step), the path's states are counted in outcome().
+       */
       void
       run(SystemInterface                               &system,
           SystemInterface::Vector                       &u,
           const std::function<void(const StepRecord &)> &on_step,
-          StabilityInterface                            *stability);
+          StabilityInterface                            *stability,
+          const LoadDerivative                          &load_derivative = {});
 
       const DriverTimings &
       timings() const
@@ -134,7 +157,44 @@ namespace pdfem
         StabilityInterface                                 *stability,
         const std::function<void(const StabilityReport &)> &on_check = {});
 
+      /**
+       * Arc-length continuation for any load path r(u, t): soft loading
+       * (f_ext = t q), hard loading (prescribed values u_p(t), written by
+       * SystemInterface::apply_dirichlet at every iterate), or both. The
+       * linearisation r + d r/d t dt - K du = 0 gives du = K^-1 r + dt
+       * K^-1 d r/d t, as above with q replaced by @p load_derivative at the
+       * current iterate; the constraint |Delta u| = Delta l is on the free
+       * DoFs. Under displacement control this follows a snap-back (the
+       * prescribed displacement decreasing while the crack grows), where
+       * load-controlled Newton stops.
+       */
+      void
+      run_arc_length(
+        SystemInterface                                    &system,
+        SystemInterface::Vector                            &u,
+        const LoadDerivative                               &load_derivative,
+        unsigned int                                        max_steps,
+        const std::function<void(const StepRecord &)>      &on_step,
+        StabilityInterface                                 *stability,
+        const std::function<void(const StabilityReport &)> &on_check = {});
+
     private:
+      /// One arc-length step from the converged (last, lambda): predictor
+      /// along K^-1 dr/dt oriented by @p increment, Newton corrections
+      /// with |u - last| = dl on the free DoFs (@p free_part zeroes the
+      /// prescribed entries). True if converged; u, lam the new point.
+      bool
+      arc_step(SystemInterface               &system,
+               SystemInterface::Vector       &u,
+               double                        &lam,
+               const SystemInterface::Vector &last,
+               double                         lambda,
+               const SystemInterface::Vector &increment,
+               double                         dl,
+               const LoadDerivative          &load_derivative,
+               const std::function<void(SystemInterface::Vector &)> &free_part,
+               StepRecord                                           &record);
+
       /// Newton at load factor t from u; true if converged.
       bool
       solve_step(SystemInterface         &system,

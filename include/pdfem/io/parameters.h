@@ -214,15 +214,16 @@ namespace pdfem
      */
     struct RNP
     {
-      std::string calibration     = "moduli"; // moduli | constants
-      double      C               = 0.;
-      double      beta            = 0.;
-      double      fracture_energy = 0.;         // G_c (calibration = moduli)
-      std::string influence       = "constant"; // constant | linear
-      std::string force_scaling   = "paper";    // paper | prototype
-      std::string nodal_volumes   = "cells";    // cells | uniform
-      double      dirichlet_layer = 1.;         // layer thickness / horizon
-      std::string tangent         = "analytic"; // analytic | finite difference
+      std::string calibration      = "moduli"; // moduli | constants
+      double      C                = 0.;
+      double      beta             = 0.;
+      double      fracture_energy  = 0.;         // G_c (calibration = moduli)
+      std::string influence        = "constant"; // constant | linear
+      std::string force_scaling    = "paper";    // paper | prototype
+      std::string nodal_volumes    = "cells";    // cells | uniform
+      double      dirichlet_layer  = 1.;         // layer thickness / horizon
+      std::string tangent          = "analytic"; // analytic | finite difference
+      std::string interface_energy = "full bonds"; // full bonds | partition
 
       static void
       declare(dealii::ParameterHandler &prm);
