@@ -148,11 +148,13 @@ namespace pdfem
     }
 
     template <int dim>
+    template <typename Select, typename Use>
     void
-    CoupledSystem<dim>::Impl::assemble_fe_matrix()
+    CoupledSystem<dim>::Impl::for_each_cell_stiffness(const Select &select,
+                                                      const Use    &use) const
     {
-      // The FE cells' stiffness, unconstrained (f_int = K_FE u), once.
-      fe_matrix = 0.;
+      // use(cell, local DoFs, K) for every locally owned cell that select()
+      // accepts, K its Q1/P1 elasticity stiffness.
       hp::FEValues<dim>             fe_values(mapping,
                                   fe,
                                   quadrature,
@@ -160,14 +162,29 @@ namespace pdfem
       std::vector<global_dof_index> local_dofs;
       std::vector<double>           K;
       for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned() && !cell_pd[cell->active_cell_index()])
+        if (cell->is_locally_owned() && select(cell->active_cell_index()))
           {
             fe_values.reinit(cell);
             cell_stiffness(fe_values.get_present_fe_values(), K);
             local_dofs.resize(cell->get_fe().n_dofs_per_cell());
             cell->get_dof_indices(local_dofs);
-            add_to_matrix(fe_matrix, local_dofs, local_dofs, K, false);
+            use(cell->active_cell_index(), local_dofs, K);
           }
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::assemble_fe_matrix()
+    {
+      // The FE cells' stiffness, unconstrained (f_int = K_FE u), once.
+      fe_matrix = 0.;
+      for_each_cell_stiffness(
+        [&](const unsigned int c) { return !cell_pd[c]; },
+        [&](unsigned int,
+            const std::vector<global_dof_index> &local_dofs,
+            const std::vector<double>           &K) {
+          add_to_matrix(fe_matrix, local_dofs, local_dofs, K, false);
+        });
       fe_matrix.compress(VectorOperation::add);
       if (matrix_free)
         assemble_auxiliary();
@@ -247,31 +264,22 @@ namespace pdfem
           auxiliary = 0.;
           auxiliary_cut.assign(cut.size(), false);
         }
-      hp::FEValues<dim>             fe_values(mapping,
-                                  fe,
-                                  quadrature,
-                                  update_gradients | update_JxW_values);
-      std::vector<global_dof_index> local_dofs;
-      std::vector<double>           K;
-      unsigned int                  n_changed = 0;
-      for (const auto &cell : dofs.active_cell_iterators())
-        {
-          const unsigned int c = cell->active_cell_index();
-          if (!cell->is_locally_owned() ||
-              (incremental && cut[c] == auxiliary_cut[c]))
-            continue;
-          fe_values.reinit(cell);
-          cell_stiffness(fe_values.get_present_fe_values(), K);
+      unsigned int n_changed = 0;
+      for_each_cell_stiffness(
+        [&](const unsigned int c) {
+          return !incremental || cut[c] != auxiliary_cut[c];
+        },
+        [&](const unsigned int                   c,
+            const std::vector<global_dof_index> &local_dofs,
+            std::vector<double>                  K) {
           const double factor = !incremental ?
                                   (cut[c] ? cut_cell_stiffness : 1.) :
                                   cut_cell_stiffness - 1.;
           for (double &k : K)
             k *= factor;
-          local_dofs.resize(cell->get_fe().n_dofs_per_cell());
-          cell->get_dof_indices(local_dofs);
           add_to_matrix(auxiliary, local_dofs, local_dofs, K);
           ++n_changed;
-        }
+        });
       auxiliary_cut    = cut;
       auxiliary_n_held = held_lid.size();
       if (!incremental)

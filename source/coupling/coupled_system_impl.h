@@ -63,6 +63,11 @@ namespace pdfem
       /// "amg fe" the auxiliary matrix: FE stiffness of every cell.
       void
       assemble_fe_matrix();
+      /// use(cell index, local DoFs, K) for every locally owned cell with
+      /// select(cell index), K its Q1/P1 stiffness (cell_stiffness()).
+      template <typename Select, typename Use>
+      void
+      for_each_cell_stiffness(const Select &select, const Use &use) const;
       /// The "amg fe" preconditioner's matrix: the FE stiffness of every
       /// cell, cells cut by broken bonds weakened (cut_cell_stiffness).
       void

@@ -73,14 +73,23 @@ strip() { # name scene reference [--set ...]
     "$K" "$reference" "$(awk -v k="$K" -v r="$reference" 'BEGIN { printf "%.4f", (k - r) / r }')" >> "$csv"
 }
 scenes="$root/tests/scenes"
-strip "centre strip:pdlsm-fem h=0.02" "$scenes/sif_center_crack_strip.prm" 9.1372e5
-strip "centre strip:pdlsm-fem h=0.01" "$scenes/sif_center_crack_strip.prm" 9.1372e5 \
-  --set "Mesh/Global refinements=1" --set "Linear solver/Type=gmres"
-strip "edge strip:pdlsm-fem h=0.02" "$scenes/sif_edge_crack_strip.prm" 1.67799e6
-strip "edge strip:pdlsm-fem h=0.01" "$scenes/sif_edge_crack_strip.prm" 1.67799e6 \
-  --set "Mesh/Global refinements=1" --set "Linear solver/Type=gmres"
-strip "edge strip:all pd h=0.02" "$scenes/sif_edge_crack_strip.prm" 1.67799e6 \
-  --set "Mesh/PD regions=all" --set "Linear solver/Type=gmres"
+fine=(--set "Mesh/Input file=$root/tests/meshes/cracked_strip_fine.geo" --set "Linear solver/Type=gmres")
+free=(--set "Peridynamics/Crack faces=free surface")
+for faces in cut free; do
+  [ $faces = cut ] && opt=() || opt=("${free[@]}")
+  strip "centre strip:$faces h=0.02" "$scenes/sif_center_crack_strip.prm" 9.1372e5 ${opt[@]+"${opt[@]}"}
+  strip "centre strip:$faces h=0.01" "$scenes/sif_center_crack_strip.prm" 9.1372e5 "${fine[@]}" ${opt[@]+"${opt[@]}"}
+  for nu in 0; do
+    strip "centre strip:$faces h=0.02 nu=$nu" "$scenes/sif_center_crack_strip.prm" 9.1372e5 \
+      --set "Material/Poisson's ratio=$nu" ${opt[@]+"${opt[@]}"}
+  done
+  strip "centre strip:$faces h=0.02 plane strain" "$scenes/sif_center_crack_strip.prm" 9.1372e5 \
+    --set "Material/Plane model=plane strain" ${opt[@]+"${opt[@]}"}
+  strip "edge strip:$faces h=0.02" "$scenes/sif_edge_crack_strip.prm" 1.67799e6 ${opt[@]+"${opt[@]}"}
+  strip "edge strip:$faces h=0.01" "$scenes/sif_edge_crack_strip.prm" 1.67799e6 "${fine[@]}" ${opt[@]+"${opt[@]}"}
+  strip "edge strip:$faces all pd h=0.02" "$scenes/sif_edge_crack_strip.prm" 1.67799e6 \
+    --set "Mesh/PD regions=all" --set "Linear solver/Type=gmres" ${opt[@]+"${opt[@]}"}
+done
 gmsh -2 "$here/edge_crack_slit.geo" -format msh22 -o "$work/edge_slit.msh" -v 0
 sed -e "s|../../meshes/cracked_strip.geo|$work/edge_slit.msh|" -e 's/  set PD regions = pd/  set PD regions = none/' \
   "$scenes/sif_edge_crack_strip.prm" > "$work/edge_slit.prm"
