@@ -9,17 +9,24 @@
 #    no .prm; otherwise pdfem WORK/converted/model.prm, and history.csv, nodes.csv and
 #    summary.json must agree with the reference run to TOL (pdfem_check csv / summaries).
 #
-# Directive read from the command file's comments:
+# Directives read from the command file's comments:
 #   # REQUIRES: <path relative to the file>      skip (not fail) when the path is absent
+#   # CONVERT-ERROR: <text>                      a model that pdfem runs but a .prm cannot express:
+#                                                the converter must exit with status 2 and one line
+#                                                "pdfem-convert: error: ..." containing <text>, and
+#                                                write no .prm
 cmake_minimum_required(VERSION 3.16)
 set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
 set(ENV{OMPI_ALLOW_RUN_AS_ROOT_CONFIRM} 1)
 
 get_filename_component(in_dir "${IN}" DIRECTORY)
 get_filename_component(name "${IN}" NAME_WE)
-file(STRINGS "${IN}" directives REGEX "^# REQUIRES:")
+file(STRINGS "${IN}" directives REGEX "^# (REQUIRES|CONVERT-ERROR):")
+set(convert_error "")
 foreach(line IN LISTS directives)
-  if(line MATCHES "^# REQUIRES: *(.+)$")
+  if(line MATCHES "^# CONVERT-ERROR: *(.+)$")
+    string(STRIP "${CMAKE_MATCH_1}" convert_error)
+  elseif(line MATCHES "^# REQUIRES: *(.+)$")
     string(STRIP "${CMAKE_MATCH_1}" required)
     if(NOT EXISTS "${in_dir}/${required}")
       message("PDFEM_TEST_SKIPPED: ${in_dir}/${required} is absent")
@@ -30,6 +37,24 @@ endforeach()
 
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
+
+if(convert_error)
+  execute_process(COMMAND "${CONVERT}" "${IN}" --output "${WORK}/converted"
+    RESULT_VARIABLE rc_c OUTPUT_VARIABLE out_c ERROR_VARIABLE err_c)
+  message("pdfem-convert: exit status ${rc_c}\n${out_c}${err_c}")
+  string(STRIP "${err_c}" e_c)
+  string(FIND "${e_c}" "\n" newline)
+  string(FIND "${e_c}" "${convert_error}" found)
+  if(NOT rc_c EQUAL 2 OR NOT newline EQUAL -1 OR NOT e_c MATCHES "^pdfem-convert: error: "
+     OR found EQUAL -1)
+    message(FATAL_ERROR "expected exit status 2 and one line 'pdfem-convert: error: ...' "
+      "containing '${convert_error}'")
+  endif()
+  if(EXISTS "${WORK}/converted/${name}.prm" OR EXISTS "${WORK}/converted/${name}.msh")
+    message(FATAL_ERROR "the model cannot be expressed, but files were written")
+  endif()
+  return()
+endif()
 
 # 1. the reference run
 execute_process(COMMAND "${PDFEM}" "${IN}" --output "${WORK}/in" --quiet

@@ -405,7 +405,7 @@ namespace pdfem
                         "static runs). Example: 'left: x = 0; right: x = "
                         "1e-4*x'. The target is a boundary name, a node "
                         "set (a gmsh physical point group: any nodes of the "
-                        "mesh, e.g. interior ones; read from .msh format 2.2) "
+                        "mesh, e.g. interior ones; ASCII .msh 2.2 or 4.1) "
                         "or a node '(x, y[, z])'. Where two entries fix the "
                         "same DoF, the first one counts.");
       prm.declare_entry("Traction",

@@ -132,22 +132,92 @@ namespace pdfem
         throw InputError(msh_file,
                          "node sets (physical points)",
                          problem,
-                         "ASCII gmsh format 2.2 with point elements (type "
-                         "15) on mesh vertices");
+                         "ASCII gmsh format 2.2 or 4.1 with point elements "
+                         "(type 15) on mesh vertices");
       };
       std::ifstream                                   in(msh_file);
       std::string                                     line;
       std::map<unsigned long, std::array<double, 3>>  nodes;
       std::map<std::string, std::vector<std::size_t>> set_nodes;
+      bool                                            v4 = false;
+      // 4.1: the physical tags of each point entity ($Entities)
+      std::map<unsigned long, std::vector<unsigned long>> point_physicals;
       while (std::getline(in, line))
         if (line.rfind("$MeshFormat", 0) == 0)
           {
             double version = 0;
             int    binary  = 0;
             in >> version >> binary;
-            if (version >= 3. || binary != 0)
+            v4 = version >= 4.;
+            if ((version >= 3. && version != 4.1) || binary != 0)
               fail("the file is gmsh format " + number(version) +
                    (binary ? " (binary)" : ""));
+          }
+        else if (v4 && line.rfind("$Entities", 0) == 0)
+          {
+            std::size_t n_points = 0, n_other = 0;
+            in >> n_points >> n_other >> n_other >> n_other;
+            for (std::size_t i = 0; i < n_points; ++i)
+              {
+                unsigned long tag = 0, n_physicals = 0;
+                double        x = 0;
+                in >> tag >> x >> x >> x >> n_physicals;
+                auto &physicals = point_physicals[tag];
+                physicals.resize(n_physicals);
+                for (auto &p : physicals)
+                  in >> p;
+              }
+          }
+        else if (v4 && line.rfind("$Nodes", 0) == 0)
+          {
+            std::size_t n_blocks = 0, n = 0, lo = 0, hi = 0;
+            in >> n_blocks >> n >> lo >> hi;
+            for (std::size_t b = 0; b < n_blocks; ++b)
+              {
+                int                        entity_dim = 0, parametric = 0;
+                std::size_t                tag = 0, n_in_block = 0;
+                std::vector<unsigned long> ids;
+                in >> entity_dim >> tag >> parametric >> n_in_block;
+                ids.resize(n_in_block);
+                for (auto &id : ids)
+                  in >> id;
+                for (const auto id : ids)
+                  {
+                    std::array<double, 3> x{};
+                    in >> x[0] >> x[1] >> x[2];
+                    double u = 0;
+                    for (int k = 0; parametric && k < entity_dim; ++k)
+                      in >> u;
+                    nodes[id] = x;
+                  }
+              }
+          }
+        else if (v4 && line.rfind("$Elements", 0) == 0)
+          {
+            std::size_t n_blocks = 0, n = 0, lo = 0, hi = 0;
+            in >> n_blocks >> n >> lo >> hi;
+            for (std::size_t b = 0; b < n_blocks; ++b)
+              {
+                int           entity_dim = 0, type = 0;
+                unsigned long tag = 0, n_in_block = 0;
+                in >> entity_dim >> tag >> type >> n_in_block;
+                std::getline(in, line);
+                for (unsigned long i = 0; i < n_in_block; ++i)
+                  {
+                    std::getline(in, line);
+                    if (type != 15 || entity_dim != 0)
+                      continue;
+                    std::istringstream s(line);
+                    unsigned long      id = 0, node = 0;
+                    s >> id >> node;
+                    for (const auto physical : point_physicals[tag])
+                      {
+                        const auto it = name_of_tag.find(physical);
+                        if (it != name_of_tag.end())
+                          set_nodes[it->second].push_back(node);
+                      }
+                  }
+              }
           }
         else if (line.rfind("$Nodes", 0) == 0)
           {
@@ -188,6 +258,9 @@ namespace pdfem
 
       // Vertices by their coordinates (read by the same operator>>, so
       // equal bit for bit).
+      // Two vertices at one place (a seam) would make the match ambiguous:
+      // numbers::invalid_unsigned_int marks such places.
+      const unsigned int                              twice = -1;
       std::map<std::array<double, dim>, unsigned int> vertex_at;
       const auto &vertices = tria.get_vertices();
       const auto &used     = tria.get_used_vertices();
@@ -197,7 +270,9 @@ namespace pdfem
             std::array<double, dim> key;
             for (unsigned int d = 0; d < dim; ++d)
               key[d] = vertices[v][d];
-            vertex_at[key] = v;
+            const auto [it, inserted] = vertex_at.emplace(key, v);
+            if (!inserted)
+              it->second = twice;
           }
       for (const auto &[name, ids] : set_nodes)
         {
@@ -215,6 +290,10 @@ namespace pdfem
               if (v == vertex_at.end())
                 fail("node set '" + name + "': node " + std::to_string(id) +
                      " belongs to no cell");
+              if (v->second == twice)
+                fail("node set '" + name + "': node " + std::to_string(id) +
+                     " shares its coordinates with another vertex (node "
+                     "sets are matched to the mesh by coordinates)");
               set.push_back(v->second);
             }
         }

@@ -7,11 +7,15 @@
 #include <pdfem/io/pdlsm_fem_input.h>
 #include <pdfem/scene/convert.h>
 
+#include <deal.II/base/numbers.h>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <sstream>
 
 #include "scene_internal.h"
@@ -23,6 +27,7 @@ namespace pdfem
     namespace
     {
       namespace fs = std::filesystem;
+      using dealii::numbers::invalid_unsigned_int;
       using internal::Setup;
 
       /// A double that reads back bit for bit.
@@ -428,6 +433,44 @@ namespace pdfem
                                "node " + std::to_string(v + 1) +
                                  " belongs to no element",
                                "nodes of the mesh's elements");
+
+        // Node sets are matched to the mesh by their coordinates
+        // (Mesh::read_node_sets): a node at the place of another vertex (a
+        // seam) cannot be told apart in a .msh.
+        std::map<std::array<double, dim>, unsigned int> node_at;
+        std::vector<unsigned int>                       twin(model.nodes.size(),
+                                       invalid_unsigned_int);
+        for (unsigned int v = 0; v < model.nodes.size(); ++v)
+          if (used[v])
+            {
+              std::array<double, dim> key;
+              for (unsigned int d = 0; d < dim; ++d)
+                key[d] = model.nodes[v][d];
+              const auto [it, inserted] = node_at.emplace(key, v);
+              if (!inserted)
+                {
+                  twin[v]          = it->second;
+                  twin[it->second] = v;
+                }
+            }
+        const auto check_set = [&](const std::vector<unsigned int> &nodes,
+                                   const std::string               &set) {
+          for (const unsigned int v : nodes)
+            if (used[v] && twin[v] != invalid_unsigned_int)
+              throw InputError(model.command_file,
+                               set,
+                               "cannot be expressed as a .prm: node " +
+                                 std::to_string(v + 1) +
+                                 " lies at the place of node " +
+                                 std::to_string(twin[v] + 1) +
+                                 ", and node sets are matched to the mesh by "
+                                 "their coordinates",
+                               "node sets without coincident nodes (or run "
+                               "the .in file itself)");
+        };
+        for (std::size_t s = 0; s < model.essential.size(); ++s)
+          check_set(model.essential[s].nodes, "ebc" + std::to_string(s));
+        check_set(model.no_fail_nodes, "NO FAIL region");
 
         Conversion result;
         result.notes = setup.notes;

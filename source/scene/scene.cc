@@ -238,7 +238,16 @@ namespace pdfem
           }
         // Node sets (physical points): vertex indices, which global
         // refinement keeps.
-        const auto node_sets = Mesh::read_node_sets<dim>(msh, tria);
+        // Read only when the scene uses them (so that a mesh with physical
+        // points in another format still serves scenes that do not).
+        bool uses_node_sets = !prm.fracture.no_fail_nodes.empty();
+        for (const auto &e : prm.boundary_conditions.dirichlet)
+          uses_node_sets =
+            uses_node_sets || (names.node_sets.count(e.boundary) > 0 &&
+                               names.boundaries.count(e.boundary) == 0);
+        const auto node_sets =
+          uses_node_sets ? Mesh::read_node_sets<dim>(msh, tria) :
+                           std::map<std::string, std::vector<unsigned int>>();
         if (prm.mesh.refinements > 0)
           tria.refine_global(prm.mesh.refinements);
         timings["mesh"] = seconds_since(start);

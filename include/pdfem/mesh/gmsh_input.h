@@ -69,7 +69,8 @@ namespace pdfem
      * matched to the vertices by their coordinates. Such groups can hold any
      * nodes of the mesh, interior ones included.
      *
-     * Read from ASCII format 2.2 only.
+     * Read from ASCII formats 2.2 and 4.1 (in 4.1, the physical tags of
+     * the point entities in `$Entities`).
      * @throws pdfem::InputError (naming @p msh_file) if a file with node sets
      * is in another format, or if a node of a set is no vertex of a cell.
      */
