@@ -426,7 +426,7 @@ namespace pdfem
                         "set names) whose reactions are also summed: "
                         "history.csv columns reaction_RF_<x,y,z> and "
                         "summary.json final.reaction_RF (PDLSM-FEM's RF). "
-                        "Empty: no sum.");
+                        "Empty: no sum. Not with Peridynamics/Model = rnp.");
       prm.leave_subsection();
     }
 
@@ -1006,7 +1006,8 @@ namespace pdfem
                         "Comma-separated node sets (gmsh physical points, see "
                         "Boundary conditions/Dirichlet) whose nodes' bonds "
                         "never break, by any criterion (PDLSM-FEM's NO FAIL "
-                        "region). Empty: none.");
+                        "region). Empty: none. Not with Peridynamics/Model = "
+                        "rnp.");
       prm.declare_entry("Crack tips",
                         "inside",
                         Selection("inside|second point"),

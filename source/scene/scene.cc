@@ -236,10 +236,9 @@ namespace pdfem
                              "cannot read the mesh '" + msh + "'",
                              "a gmsh mesh of dimension " + std::to_string(dim));
           }
-        // Node sets (physical points): vertex indices, which global
-        // refinement keeps.
-        // Read only when the scene uses them (so that a mesh with physical
-        // points in another format still serves scenes that do not).
+        // Node sets (physical points) as vertex indices, which global
+        // refinement keeps; read only when the scene uses them (so that a
+        // mesh with unused physical points in another format still works).
         bool uses_node_sets = !prm.fracture.no_fail_nodes.empty();
         for (const auto &e : prm.boundary_conditions.dirichlet)
           uses_node_sets =
@@ -331,6 +330,16 @@ namespace pdfem
                                   false);
         settings.body_force    = prm.boundary_conditions.body_force;
         settings.linear_solver = prm.linear_solver;
+
+        if (prm.peridynamics.model == "rnp" &&
+            (!prm.boundary_conditions.reaction_group.empty() ||
+             !prm.fracture.no_fail_nodes.empty()))
+          throw InputError(prm.file,
+                           prm.fracture.no_fail_nodes.empty() ?
+                             "Boundary conditions/Reaction group" :
+                             "Fracture/No-fail nodes",
+                           "is not supported by the rnp model",
+                           "empty with Peridynamics/Model = rnp");
 
         // ---- reaction group: indices of the Dirichlet sets (distinct
         // target names, in order of first appearance)
