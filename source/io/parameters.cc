@@ -1022,16 +1022,18 @@ namespace pdfem
     Fracture::parse(ParameterHandler &prm, const std::string &file)
     {
       prm.enter_subsection("Fracture");
-      criterion              = prm.get("Criterion");
-      toughness              = prm.get_double("Fracture toughness");
-      tensile_strength       = prm.get_double("Tensile strength");
-      domain_inner_radius    = prm.get_double("Domain inner radius");
-      domain_outer_radius    = prm.get_double("Domain outer radius");
-      growth_length          = prm.get_double("Growth length");
-      top_k                  = prm.get_integer("Top K");
-      adaptive_margin        = prm.get_double("Adaptive margin");
-      critical_stretch       = prm.get_double("Critical stretch");
-      fracture_energy        = prm.get_double("Fracture energy");
+      criterion           = prm.get("Criterion");
+      toughness           = prm.get_double("Fracture toughness");
+      tensile_strength    = prm.get_double("Tensile strength");
+      domain_inner_radius = prm.get_double("Domain inner radius");
+      domain_outer_radius = prm.get_double("Domain outer radius");
+      growth_length       = prm.get_double("Growth length");
+      top_k               = prm.get_integer("Top K");
+      adaptive_margin     = prm.get_double("Adaptive margin");
+      critical_stretch    = prm.get_double("Critical stretch");
+      fracture_energy     = prm.get_double("Fracture energy");
+
+      // PDLSM-FEM's choices (pdfem-convert)
       growth_length_absolute = prm.get_double("Absolute growth length");
       no_fail_nodes          = split(prm.get("No-fail nodes"), ',');
       tip_at_second_point    = prm.get("Crack tips") == "second point";
