@@ -111,6 +111,13 @@ main(int argc, char **argv)
       return pdfem::Scene::ExitCode::input_error;
     }
 
+  if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    {
+      if (root)
+        std::cerr << "pdfem-convert: error: runs on one process (allowed: "
+                     "pdfem-convert without mpirun)\n";
+      return pdfem::Scene::ExitCode::input_error;
+    }
   try
     {
       const pdfem::Scene::Conversion c =
