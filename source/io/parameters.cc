@@ -6,6 +6,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -419,8 +420,11 @@ namespace pdfem
                         "expression; ...', component x, y or z, expression "
                         "a function of x, y, z and t (t = load factor in "
                         "static runs). Example: 'left: x = 0; right: x = "
-                        "1e-4*x'. Where two entries fix the same DoF, the "
-                        "first one counts.");
+                        "1e-4*x'. The target is a boundary name, a node "
+                        "set (a gmsh physical point group: any nodes of the "
+                        "mesh, e.g. interior ones; ASCII .msh 2.2 or 4.1) "
+                        "or a node '(x, y[, z])'. Where two entries fix the "
+                        "same DoF, the first one counts.");
       prm.declare_entry("Traction",
                         "",
                         Anything(),
@@ -432,6 +436,14 @@ namespace pdfem
                         Anything(),
                         "Body force per unit volume [N/m^3]: dim expressions "
                         "of x, y, z, t separated by ';' (empty: none).");
+      prm.declare_entry("Reaction group",
+                        "",
+                        Anything(),
+                        "Comma-separated Dirichlet targets (boundary or node "
+                        "set names) whose reactions are also summed: "
+                        "history.csv columns reaction_RF_<x,y,z> and "
+                        "summary.json final.reaction_RF (PDLSM-FEM's RF). "
+                        "Empty: no sum. Not with Peridynamics/Model = rnp.");
       prm.leave_subsection();
     }
 
@@ -448,8 +460,21 @@ namespace pdfem
                                          false);
       traction  = parse_boundary_entries(
         prm.get("Traction"), file, "Boundary conditions/Traction", dim, true);
-      body_force = split(prm.get("Body force"), ';');
+      body_force     = split(prm.get("Body force"), ';');
+      reaction_group = split(prm.get("Reaction group"), ',');
       prm.leave_subsection();
+      for (const std::string &name : reaction_group)
+        if (std::none_of(dirichlet.begin(),
+                         dirichlet.end(),
+                         [&](const BoundaryEntry &e) {
+                           return e.boundary == name;
+                         }))
+          throw InputError(file,
+                           "Boundary conditions/Reaction group",
+                           "'" + name +
+                             "' is not a target of the Dirichlet "
+                             "conditions",
+                           "targets named in Boundary conditions/Dirichlet");
       if (!body_force.empty() && static_cast<int>(body_force.size()) != dim)
         throw InputError(file,
                          "Boundary conditions/Body force",
@@ -556,6 +581,12 @@ namespace pdfem
                         "quasi-static: the nominal increment of t (0: 1 / "
                         "Load steps). Prescribed displacements and loads are "
                         "expressions of t.");
+      prm.declare_entry("Initial load",
+                        "-1",
+                        Double(),
+                        "quasi-static: the load factor t of the first "
+                        "solve; < 0: one Load increment (PDLSM-FEM: 0, an "
+                        "unloaded first step).");
       prm.declare_entry("Jump to critical load",
                         "true",
                         Bool(),
@@ -699,6 +730,7 @@ namespace pdfem
       type                        = prm.get("Type");
       load_steps                  = prm.get_integer("Load steps");
       load_increment              = prm.get_double("Load increment");
+      initial_load                = prm.get_double("Initial load");
       jump_to_critical_load       = prm.get_bool("Jump to critical load");
       hold_load_while_growing     = prm.get_bool("Hold load while cracks grow");
       max_step_cuts               = prm.get_integer("Max step cuts");
@@ -980,6 +1012,13 @@ namespace pdfem
                         "mcts: the advance d_c of a tip per growth step; max "
                         "principal stress: the length of a virtual crack; in "
                         "element sizes at the tip or bond.");
+      prm.declare_entry("Absolute growth length",
+                        "0",
+                        Double(0.),
+                        "> 0: replaces 'Growth length' by this length [m] "
+                        "everywhere (PDLSM-FEM: d_cf times the square root "
+                        "of the smallest element area); 0: Growth length "
+                        "counts.");
       prm.declare_entry("Top K",
                         "0",
                         Integer(0),
@@ -1002,6 +1041,21 @@ namespace pdfem
                         "m_e: FE cells within m_e element sizes of a crack "
                         "become PD, at the start and whenever a crack grows; "
                         "0: the PD region of the mesh never changes.");
+      prm.declare_entry("No-fail nodes",
+                        "",
+                        Anything(),
+                        "Comma-separated node sets (gmsh physical points, see "
+                        "Boundary conditions/Dirichlet) whose nodes' bonds "
+                        "never break, by any criterion (PDLSM-FEM's NO FAIL "
+                        "region). Empty: none. Not with Peridynamics/Model = "
+                        "rnp.");
+      prm.declare_entry("Crack tips",
+                        "inside",
+                        Selection("inside|second point"),
+                        "Which ends of the 2D pre-existing cracks are tips: "
+                        "inside: every end inside the body that touches no "
+                        "other crack; second point: the second point of each "
+                        "crack only (PDLSM-FEM: a crack is [start, tip]).");
       prm.leave_subsection();
     }
 
@@ -1021,6 +1075,11 @@ namespace pdfem
       adaptive_margin     = prm.get_double("Adaptive margin");
       critical_stretch    = prm.get_double("Critical stretch");
       fracture_energy     = prm.get_double("Fracture energy");
+
+      // PDLSM-FEM's choices (pdfem-convert)
+      growth_length_absolute = prm.get_double("Absolute growth length");
+      no_fail_nodes          = split(prm.get("No-fail nodes"), ',');
+      tip_at_second_point    = prm.get("Crack tips") == "second point";
       prm.leave_subsection();
       if (criterion == "mcts" && !(toughness > 0.))
         throw InputError(file,

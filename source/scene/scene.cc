@@ -79,12 +79,14 @@ namespace pdfem
 
       template <int dim>
       std::vector<Coupling::BoundaryCondition<dim>>
-      resolve_conditions(const std::vector<Parameters::BoundaryEntry> &entries,
-                         const Mesh::PhysicalNames                    &names,
-                         const std::set<unsigned int> &boundary_ids_in_mesh,
-                         const std::string            &file,
-                         const std::string            &parameter,
-                         const bool                    allow_points)
+      resolve_conditions(
+        const std::vector<Parameters::BoundaryEntry> &entries,
+        const Mesh::PhysicalNames                    &names,
+        const std::set<unsigned int>                 &boundary_ids_in_mesh,
+        const std::map<std::string, std::vector<unsigned int>> &node_sets,
+        const std::string                                      &file,
+        const std::string                                      &parameter,
+        const bool                                              allow_points)
       {
         std::vector<Coupling::BoundaryCondition<dim>> result;
         for (const auto &e : entries)
@@ -129,17 +131,35 @@ namespace pdfem
               }
             else
               {
-                unsigned int tag = 0;
-                if (!lookup(names.boundaries, e.boundary, tag) ||
-                    boundary_ids_in_mesh.count(tag) == 0)
+                unsigned int tag      = 0;
+                const auto   node_set = node_sets.find(e.boundary);
+                if (names.boundaries.count(e.boundary) == 0 &&
+                    node_set != node_sets.end())
+                  {
+                    // A node set (gmsh physical points): any mesh nodes.
+                    if (!allow_points)
+                      throw InputError(file,
+                                       parameter,
+                                       "the node set '" + e.boundary +
+                                         "' cannot carry a traction",
+                                       "the name of a boundary");
+                    bc.vertices = node_set->second;
+                  }
+                else if (!lookup(names.boundaries, e.boundary, tag) ||
+                         boundary_ids_in_mesh.count(tag) == 0)
                   throw InputError(
                     file,
                     parameter,
                     "the mesh has no boundary named '" + e.boundary + "'",
                     "boundaries of the mesh: " +
                       Mesh::PhysicalNames::list(names.boundaries) +
-                      (allow_points ? ", or a node given as (x, y[, z])" : ""));
-                bc.boundary_ids = {tag};
+                      (allow_points ?
+                         "; node sets: " +
+                           Mesh::PhysicalNames::list(names.node_sets) +
+                           "; or a node given as (x, y[, z])" :
+                         ""));
+                else
+                  bc.boundary_ids = {tag};
               }
             result.push_back(bc);
           }
@@ -212,6 +232,17 @@ namespace pdfem
                              "cannot read the mesh '" + msh + "'",
                              "a gmsh mesh of dimension " + std::to_string(dim));
           }
+        // Node sets (physical points) as vertex indices, which global
+        // refinement keeps; read only when the scene uses them (so that a
+        // mesh with unused physical points in another format still works).
+        bool uses_node_sets = !prm.fracture.no_fail_nodes.empty();
+        for (const auto &e : prm.boundary_conditions.dirichlet)
+          uses_node_sets =
+            uses_node_sets || (names.node_sets.count(e.boundary) > 0 &&
+                               names.boundaries.count(e.boundary) == 0);
+        const auto node_sets =
+          uses_node_sets ? Mesh::read_node_sets<dim>(msh, tria) :
+                           std::map<std::string, std::vector<unsigned int>>();
         if (prm.mesh.refinements > 0)
           tria.refine_global(prm.mesh.refinements);
         timings["mesh"] = seconds_since(start);
@@ -282,6 +313,7 @@ namespace pdfem
           resolve_conditions<dim>(prm.boundary_conditions.dirichlet,
                                   names,
                                   boundary_ids,
+                                  node_sets,
                                   prm.file,
                                   "Boundary conditions/Dirichlet",
                                   true);
@@ -289,11 +321,51 @@ namespace pdfem
           resolve_conditions<dim>(prm.boundary_conditions.traction,
                                   names,
                                   boundary_ids,
+                                  node_sets,
                                   prm.file,
                                   "Boundary conditions/Traction",
                                   false);
         settings.body_force    = prm.boundary_conditions.body_force;
         settings.linear_solver = prm.linear_solver;
+
+        if (prm.peridynamics.model == "rnp" &&
+            (!prm.boundary_conditions.reaction_group.empty() ||
+             !prm.fracture.no_fail_nodes.empty()))
+          throw InputError(prm.file,
+                           prm.fracture.no_fail_nodes.empty() ?
+                             "Boundary conditions/Reaction group" :
+                             "Fracture/No-fail nodes",
+                           "is not supported by the rnp model",
+                           "empty with Peridynamics/Model = rnp");
+
+        // ---- reaction group: indices of the Dirichlet sets (distinct
+        // target names, in order of first appearance)
+        std::vector<std::string> set_names;
+        for (const auto &bc : settings.dirichlet)
+          if (std::find(set_names.begin(), set_names.end(), bc.name) ==
+              set_names.end())
+            set_names.push_back(bc.name);
+        for (const auto &name : prm.boundary_conditions.reaction_group)
+          setup.reaction_group.push_back(
+            std::find(set_names.begin(), set_names.end(), name) -
+            set_names.begin());
+
+        // ---- no-fail nodes and crack tips
+        for (const auto &name : prm.fracture.no_fail_nodes)
+          {
+            const auto it = node_sets.find(name);
+            if (it == node_sets.end())
+              throw InputError(prm.file,
+                               "Fracture/No-fail nodes",
+                               "the mesh has no node set named '" + name + "'",
+                               "node sets (physical points) of the mesh: " +
+                                 Mesh::PhysicalNames::list(names.node_sets));
+            settings.no_fail_vertices.insert(settings.no_fail_vertices.end(),
+                                             it->second.begin(),
+                                             it->second.end());
+          }
+        if (prm.fracture.tip_at_second_point) // 3D cracks have no tips
+          setup.tip_at_end.assign(settings.cracks.size(), true);
 
         setup.setup_start = start;
       }

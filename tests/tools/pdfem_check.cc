@@ -10,10 +10,17 @@
 //   pdfem_check bound  summary.json KEY >|< BOUND
 //   pdfem_check nondecreasing history.csv COLUMN
 //       passes if the column never decreases from one row to the next.
-//   pdfem_check csv    a.csv b.csv TOL
+//   pdfem_check csv    a.csv b.csv TOL [SKIP,...]
 //       same header and rows; every column agrees to TOL relative to the
 //       largest magnitude among the columns of its quantity (same first
-//       letter).
+//       letter); the columns named in SKIP (comma-separated) are not
+//       compared.
+//   pdfem_check summaries a.json b.json TOL
+//       two summary.json files of one scene run from two inputs: the same
+//       members, equal strings and booleans, and numbers that agree to TOL
+//       relative to the largest magnitude among the numbers of their object
+//       (as csv does per quantity); the run-dependent members (timings,
+//       peak_memory_mb_rank0, input_file, message) are skipped.
 //   pdfem_check column history.csv COLUMN max|min|maxabs|last >|< BOUND
 //       a statistic of one column of a history (rows after the header).
 //   pdfem_check wave-speed history.csv COL_A X_A COL_B X_B LEVEL EXPECTED TOL
@@ -181,6 +188,74 @@ namespace
     return rows;
   }
 
+  /// Compare two summaries (see the header); prints one line per difference.
+  bool
+  same_summary(const Value       &a,
+               const Value       &b,
+               const std::string &path,
+               const double       tol,
+               unsigned int      &n_compared)
+  {
+    static const std::vector<std::string> skipped = {"timings",
+                                                     "peak_memory_mb_rank0",
+                                                     "input_file",
+                                                     "message"};
+    bool                                  ok      = true;
+    double                                scale   = 0.;
+    for (const auto *v : {&a, &b})
+      for (const auto &[k, m] : v->members)
+        if (m.kind == Value::number)
+          scale = std::max(scale, std::abs(m.x));
+    const auto names = [](const Value &v) {
+      std::vector<std::string> n;
+      for (const auto &[k, m] : v.members)
+        n.push_back(k);
+      return n;
+    };
+    if (names(a) != names(b))
+      {
+        std::cout << "FAIL " << (path.empty() ? "(top)" : path)
+                  << ": different members\n";
+        return false;
+      }
+    for (std::size_t i = 0; i < a.members.size(); ++i)
+      {
+        const auto &[key, x] = a.members[i];
+        const Value      &y  = b.members[i].second;
+        const std::string p  = path.empty() ? key : path + "." + key;
+        if (std::find(skipped.begin(), skipped.end(), key) != skipped.end())
+          continue;
+        if (x.kind != y.kind)
+          {
+            std::cout << "FAIL " << p << ": different kinds\n";
+            ok = false;
+          }
+        else if (x.kind == Value::object)
+          ok = same_summary(x, y, p, tol, n_compared) && ok;
+        else if (x.kind == Value::number)
+          {
+            ++n_compared;
+            const double error = std::abs(x.x - y.x);
+            if (!(error <= tol * scale))
+              {
+                std::cout.precision(17);
+                std::cout << "FAIL " << p << ": " << x.x << " vs " << y.x
+                          << " (difference " << error << ", scale " << scale
+                          << ")\n";
+                ok = false;
+              }
+          }
+        else if (x.s != y.s || x.x != y.x)
+          {
+            ++n_compared;
+            std::cout << "FAIL " << p << ": '" << x.s << "' vs '" << y.s
+                      << "'\n";
+            ok = false;
+          }
+      }
+    return ok;
+  }
+
   /// Index of @p name in the header of @p rows, or exit with a message.
   std::size_t
   column_index(const std::vector<std::vector<std::string>> &rows,
@@ -305,7 +380,7 @@ main(int argc, char **argv)
                   << rows.size() - 1 << " rows\n";
       return ok ? 0 : 1;
     }
-  if (a.size() == 4 && a[0] == "csv")
+  if ((a.size() == 4 || a.size() == 5) && a[0] == "csv")
     {
       const auto   x   = read_csv(a[1]);
       const auto   y   = read_csv(a[2]);
@@ -329,9 +404,19 @@ main(int argc, char **argv)
               std::max(column_max[c], std::max(std::abs(u), std::abs(v)));
             error[c] = std::max(error[c], std::abs(u - v));
           }
-      bool ok = true;
+      bool                     ok = true;
+      std::vector<std::string> skip; // a[4]: columns not compared (timings)
+      if (a.size() == 5)
+        {
+          std::stringstream s(a[4]);
+          std::string       name;
+          while (std::getline(s, name, ','))
+            skip.push_back(name);
+        }
       for (std::size_t c = 0; c < n_cols; ++c)
         {
+          if (std::find(skip.begin(), skip.end(), x[0][c]) != skip.end())
+            continue;
           double scale = 0.;
           for (std::size_t d = 0; d < n_cols; ++d)
             if (x[0][d][0] == x[0][c][0])
@@ -344,6 +429,15 @@ main(int argc, char **argv)
                     << ")\n";
         }
       return ok ? 0 : 1;
+    }
+  if (a.size() == 4 && a[0] == "summaries")
+    {
+      unsigned int n = 0;
+      const bool   ok =
+        same_summary(load(a[1]), load(a[2]), "", std::stod(a[3]), n);
+      std::cout << (ok ? "ok   " : "FAIL ") << n << " values of " << a[1]
+                << " and " << a[2] << " compared (tol " << a[3] << ")\n";
+      return ok && n > 0 ? 0 : 1;
     }
   if (a.size() == 6 && a[0] == "column")
     {
@@ -403,7 +497,8 @@ main(int argc, char **argv)
                "       pdfem_check get FILE KEY\n"
                "       pdfem_check bound FILE KEY >|< BOUND\n"
                "       pdfem_check nondecreasing FILE COLUMN\n"
-               "       pdfem_check csv A B TOL\n"
+               "       pdfem_check csv A B TOL [SKIP,...]\n"
+               "       pdfem_check summaries A B TOL\n"
                "       pdfem_check column CSV COLUMN max|min|maxabs|last >|< "
                "BOUND\n"
                "       pdfem_check wave-speed CSV COL_A X_A COL_B X_B LEVEL "

@@ -105,6 +105,10 @@ namespace pdfem
       std::vector<BoundaryEntry> dirichlet;
       std::vector<BoundaryEntry> traction;
       std::vector<std::string>   body_force; // dim expressions of x, y, z, t
+      /// Dirichlet targets whose reactions are also summed as "RF"
+      /// (history.csv reaction_RF_<c>, summary.json reaction_RF; the RF
+      /// command of PDLSM-FEM).
+      std::vector<std::string> reaction_group;
 
       static void
       declare(dealii::ParameterHandler &prm);
@@ -147,7 +151,7 @@ namespace pdfem
       /// quasi-static: the nominal increment of t (0: 1 / Load steps).
       double load_increment = 0.;
       /// quasi-static: the first solve is at this t (PDLSM-FEM: 0).
-      double initial_load = -1.; // < 0: one increment
+      double initial_load = -1.; // < 0: one increment (Initial load)
       /// quasi-static: jump to the extrapolated critical load when it is
       /// nearer than the nominal increment (PDLSM-FEM's rule).
       bool jump_to_critical_load = true;
@@ -260,6 +264,13 @@ namespace pdfem
       /// sqrt(5 G_c / (9 K delta))).
       double critical_stretch = 0.;
       double fracture_energy  = 0.; // G_c [J/m^2]
+      /// Node sets (gmsh physical points) whose nodes' bonds never break
+      /// (PDLSM-FEM's NO FAIL region).
+      std::vector<std::string> no_fail_nodes;
+      /// Crack tips: false = every crack end inside the body that touches
+      /// no other crack; true = the second point of each 2D crack only
+      /// (PDLSM-FEM: a crack is [start, tip]).
+      bool tip_at_second_point = false;
 
       static void
       declare(dealii::ParameterHandler &prm);

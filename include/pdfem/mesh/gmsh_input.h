@@ -4,6 +4,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace dealii
 {
@@ -21,11 +22,14 @@ namespace pdfem
      * ids) and the boundaries (dimension dim-1, boundary ids). deal.II 9.4's
      * GridIn does not expose the names, so they are read from the
      * `$PhysicalNames` section (identical in formats 2.2 and 4.1).
+     * Groups of dimension 0 (physical points) are node sets: see
+     * read_node_sets().
      */
     struct PhysicalNames
     {
       std::map<std::string, unsigned int> regions;
       std::map<std::string, unsigned int> boundaries;
+      std::map<std::string, unsigned int> node_sets;
 
       /// "a, b, c": for error messages.
       static std::string
@@ -56,6 +60,24 @@ namespace pdfem
     void
     read_msh(const std::string               &msh_file,
              dealii::Triangulation<dim, dim> &tria);
+
+    /**
+     * The node sets of a gmsh mesh: every named physical group of dimension 0
+     * (elements of type 15, one node each), as vertex indices of @p tria (the
+     * mesh read from the same file), in the order of the file. deal.II's
+     * GridIn skips these elements in 2D and 3D, so they are read here and
+     * matched to the vertices by their coordinates. Such groups can hold any
+     * nodes of the mesh, interior ones included.
+     *
+     * Read from ASCII formats 2.2 and 4.1 (in 4.1, the physical tags of
+     * the point entities in `$Entities`).
+     * @throws pdfem::InputError (naming @p msh_file) if a file with node sets
+     * is in another format, or if a node of a set is no vertex of a cell.
+     */
+    template <int dim>
+    std::map<std::string, std::vector<unsigned int>>
+    read_node_sets(const std::string                     &msh_file,
+                   const dealii::Triangulation<dim, dim> &tria);
   } // namespace Mesh
 } // namespace pdfem
 
