@@ -3,6 +3,7 @@
 //   pdfem-convert model.in [--output DIR]
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/mpi_startup.h>
 #include <pdfem/scene/convert.h>
 #include <pdfem/scene/scene.h>
 
@@ -49,6 +50,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  pdfem::prepare_mpi_singleton_startup();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool                               root =
     dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;

@@ -262,14 +262,7 @@ namespace pdfem
                 }
             }
         }
-      for (std::size_t e = 0; e < fe.dofs.size(); ++e)
-        {
-          const auto   &dofs = fe.dofs[e];
-          const double *Ke   = fe.matrices[e].data();
-          for (std::size_t a = 0; a < dofs.size(); ++a)
-            for (std::size_t b = 0; b < dofs.size(); ++b)
-              f[dofs[a]] += Ke[a * dofs.size() + b] * u[dofs[b]];
-        }
+      fe.add_product(u, f);
     }
 
     namespace
@@ -367,14 +360,7 @@ namespace pdfem
                                     std::vector<double>       &Kv) const
     {
       Kv.assign(n_dofs(), 0.);
-      for (std::size_t e = 0; e < fe.dofs.size(); ++e)
-        {
-          const auto   &dofs = fe.dofs[e];
-          const double *Ke   = fe.matrices[e].data();
-          for (std::size_t a = 0; a < dofs.size(); ++a)
-            for (std::size_t b = 0; b < dofs.size(); ++b)
-              Kv[dofs[a]] += Ke[a * dofs.size() + b] * v[dofs[b]];
-        }
+      fe.add_product(v, Kv);
       analytic_entries<dim>(x,
                             volume,
                             offsets,

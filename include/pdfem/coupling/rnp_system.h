@@ -68,6 +68,20 @@ namespace pdfem
       {
         std::vector<std::vector<unsigned int>> dofs;
         std::vector<std::vector<double>>       matrices;
+
+        /// y += K_FE x (all elements).
+        void
+        add_product(const std::vector<double> &x, std::vector<double> &y) const
+        {
+          for (std::size_t e = 0; e < dofs.size(); ++e)
+            {
+              const std::size_t n  = dofs[e].size();
+              const double     *Ke = matrices[e].data();
+              for (std::size_t a = 0; a < n; ++a)
+                for (std::size_t b = 0; b < n; ++b)
+                  y[dofs[e][a]] += Ke[a * n + b] * x[dofs[e][b]];
+            }
+        }
       };
 
       /// @p cut(x_i, x_j): is the bond cut by a pre-crack? @p pd_node: the
