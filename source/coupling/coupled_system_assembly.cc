@@ -197,11 +197,8 @@ namespace pdfem
       // A PD cell is cut when broken bonds split its vertices into groups.
       // Only bonds of locally owned families are seen; a cell whose
       // vertices all belong to other ranks' families counts as whole.
-      std::vector<std::size_t> owner_of(n_nodes, families.owners.size());
-      for (std::size_t o = 0; o < families.owners.size(); ++o)
-        owner_of[families.owners[o]] = o;
       const auto broken = [&](const unsigned int a, const unsigned int b) {
-        const std::size_t o = owner_of[a];
+        const std::size_t o = family_of[a];
         if (o == families.owners.size())
           return false;
         for (std::size_t i = families.offsets[o]; i < families.offsets[o + 1];
@@ -423,9 +420,6 @@ namespace pdfem
       // D_k = FE diagonal block + PD block d(row k)/d(u_k); held DoFs get
       // their diagonal entry alone.
       block_inverse.assign(owned_nodes.size(), Tensor<2, dim>());
-      std::vector<std::size_t> owner_of(n_nodes, families.owners.size());
-      for (std::size_t o = 0; o < families.owners.size(); ++o)
-        owner_of[families.owners[o]] = o;
       for (std::size_t n = 0; n < owned_nodes.size(); ++n)
         {
           const unsigned int k = owned_nodes[n];
@@ -433,7 +427,7 @@ namespace pdfem
           for (unsigned int i = 0; i < dim; ++i)
             for (unsigned int j = 0; j < dim; ++j)
               D[i][j] = fe_matrix.el(node_dof[k][i], node_dof[k][j]);
-          const std::size_t o = owner_of[k];
+          const std::size_t o = family_of[k];
           if (o < families.owners.size() && !decoupled[o])
             {
               const Tensor<1, dim> s        = boundary_area[k];

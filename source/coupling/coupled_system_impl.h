@@ -187,7 +187,10 @@ namespace pdfem
       // ----- ownership and PD families
       dealii::IndexSet          owned, relevant;
       std::vector<unsigned int> owned_nodes;
-      PD::Families              families;  // owners = owned PD nodes
+      PD::Families              families; // owners = owned PD nodes
+      /// Per node: its index in families.owners, or families.owners.size()
+      /// if it owns no family here.
+      std::vector<std::size_t>  family_of;
       std::vector<std::uint8_t> decoupled; // per family owner (see above)
       /// Local index of each DoF of a node in the ghosted (relevant) vectors
       /// and, for owned nodes, in the owned vectors.

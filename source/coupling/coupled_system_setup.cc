@@ -216,6 +216,9 @@ namespace pdfem
       if (!settings.fe_nodes_in_families)
         may_be_member = is_pd;
       families = PD::find_families(x, horizon, owners, may_be_member);
+      family_of.assign(n_nodes, families.owners.size());
+      for (std::size_t o = 0; o < families.owners.size(); ++o)
+        family_of[families.owners[o]] = o;
 
       // Every family must carry the second-order fit: if one cannot, the
       // horizon is too small for the mesh (or the weight too narrow).
