@@ -11,6 +11,8 @@
 #                                                  "pdfem: error: ..." containing <text>
 #   # MPI: <n>                                     also run on n ranks: the same checks, and
 #                                                  nodes.csv equal to the 1-rank one (1e-10)
+#   # THREADS: 1                                   also run on one thread: nodes.csv and
+#                                                  history.csv (but wall_seconds) equal to 1e-10
 #   # REQUIRES: <path relative to the scene>      skip (not fail) when the path is absent
 #   # REFERENCE: <scene relative to the scene>    run it once, for CHECK-REFERENCE
 #   # CHECK-REFERENCE: <key> = <reference key> rel|abs <tol>
@@ -20,13 +22,14 @@ set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
 set(ENV{OMPI_ALLOW_RUN_AS_ROOT_CONFIRM} 1)
 set(ENV{OMPI_MCA_rmaps_base_oversubscribe} 1)
 
-file(STRINGS "${PRM}" directives REGEX "^# (CHECK|CHECK-HISTORY|CHECK-REFERENCE|REFERENCE|EXIT-STATE|EXPECT-ERROR|MPI|REQUIRES):")
+file(STRINGS "${PRM}" directives REGEX "^# (CHECK|CHECK-HISTORY|CHECK-REFERENCE|REFERENCE|EXIT-STATE|EXPECT-ERROR|MPI|THREADS|REQUIRES):")
 get_filename_component(scene_dir "${PRM}" DIRECTORY)
 set(checks "")
 set(history_checks "")
 set(exit_state "completed")
 set(expect_error "")
 set(n_ranks 0)
+set(one_thread OFF)
 set(reference "")
 set(reference_checks "")
 foreach(line IN LISTS directives)
@@ -49,6 +52,8 @@ foreach(line IN LISTS directives)
     string(STRIP "${CMAKE_MATCH_1}" expect_error)
   elseif(line MATCHES "^# MPI: *([0-9]+)")
     set(n_ranks ${CMAKE_MATCH_1})
+  elseif(line MATCHES "^# THREADS: *1 *$")
+    set(one_thread ON)
   elseif(line MATCHES "^# REQUIRES: *(.+)$")
     string(STRIP "${CMAKE_MATCH_1}" required)
     if(NOT EXISTS "${scene_dir}/${required}")
@@ -154,4 +159,19 @@ if(n_ranks GREATER 1)
   if(crc)
     message(FATAL_ERROR "the ${n_ranks}-rank result differs from the 1-rank result")
   endif()
+endif()
+if(one_thread)
+  execute_process(COMMAND "${CHECKER}" get "${WORK}/np1/summary.json" threads
+    OUTPUT_VARIABLE threads OUTPUT_STRIP_TRAILING_WHITESPACE)
+  if(threads LESS 2)
+    message("note: the first run had ${threads} thread: nothing to compare the 1-thread run with")
+  endif()
+  run_and_check(threads1 "${CMAKE_COMMAND};-E;env;DEAL_II_NUM_THREADS=1")
+  foreach(file nodes.csv history.csv)
+    execute_process(COMMAND "${CHECKER}" csv "${WORK}/np1/${file}" "${WORK}/threads1/${file}" 1e-10
+      wall_seconds RESULT_VARIABLE crc)
+    if(crc)
+      message(FATAL_ERROR "the 1-thread ${file} differs from the ${threads}-thread one")
+    endif()
+  endforeach()
 endif()

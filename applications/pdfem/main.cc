@@ -46,8 +46,11 @@ int
 main(int argc, char **argv)
 {
   pdfem::prepare_mpi_singleton_startup();
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool                               root =
+  // Threads: the cores of this machine shared among its ranks (deal.II's
+  // choice; DEAL_II_NUM_THREADS caps it).
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(
+    argc, argv, dealii::numbers::invalid_unsigned_int);
+  const bool root =
     dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
   pdfem::Scene::RunOptions options;

@@ -28,6 +28,9 @@
 #include <memory>
 #include <vector>
 
+class Epetra_BlockMapData;
+class Epetra_Import;
+
 namespace pdfem
 {
   namespace Coupling
@@ -76,15 +79,26 @@ namespace pdfem
       /// groups joined by intact bonds (a crack runs through it).
       std::vector<bool>
       cells_cut_by_broken_bonds() const;
+      // ----- matrix-free operator (coupled_system_operator.cc)
       /**
-       * Add the PD internal forces of the owned families for the
-       * displacement @p x (ghosted: owned and relevant entries) to the owned
-       * entries of @p y: row k gets sum over intact bonds of
-       * (-V_k G_m + T_m)(x_m - x_k). Works on the raw local arrays.
+       * The PD internal forces of the owned families for the displacement
+       * @p x (ghosted: owned and relevant entries), into pd_force: owner k
+       * gets the sum over intact bonds of (-V_k G_m + T_m)(x_m - x_k). Works
+       * on the raw local arrays, in chunks on all threads.
        */
       void
-      apply_pd(const dealii::TrilinosWrappers::MPI::Vector &x,
-               dealii::TrilinosWrappers::MPI::Vector       &y) const;
+      compute_pd_forces(const dealii::TrilinosWrappers::MPI::Vector &x) const;
+      /// Add pd_force to the owned entries of @p y.
+      void
+      add_pd_forces(dealii::TrilinosWrappers::MPI::Vector &y) const;
+      /// @p ghosted (owned and relevant entries) = @p v (owned), through a
+      /// kept Epetra_Import.
+      void
+      import_ghosts(const dealii::TrilinosWrappers::MPI::Vector &v,
+                    dealii::TrilinosWrappers::MPI::Vector       &ghosted) const;
+      /// Split the owners into pd_chunks; size pd_force.
+      void
+      make_pd_chunks() const;
       /// Tractions and body force at load factor @p t, into f_ext.
       void
       assemble_external(double t);
@@ -225,9 +239,22 @@ namespace pdfem
       /// The factor of a cut cell's stiffness in the auxiliary matrix.
       double                                        cut_cell_stiffness = 1e-3;
       mutable dealii::TrilinosWrappers::MPI::Vector x_ghosted, x_masked;
-      dealii::TrilinosWrappers::MPI::Vector         f_int, f_ext, u_ghosted;
-      Solvers::LinearSolver                         solver;
-      double                                        force_scale = 0.;
+      /// Owner ranges [pd_chunks[i], pd_chunks[i + 1]) with about equal
+      /// numbers of bonds, for the threads of compute_pd_forces().
+      mutable std::vector<std::size_t> pd_chunks;
+      /// PD forces per owner (dim entries each), see compute_pd_forces().
+      mutable std::vector<double> pd_force;
+      /// Owned -> ghosted imports by the identity of their maps' data
+      /// (import_ghosts()): the maps of a vector stay while it lives.
+      struct GhostImport
+      {
+        const Epetra_BlockMapData     *source, *target;
+        std::shared_ptr<Epetra_Import> import;
+      };
+      mutable std::vector<GhostImport>      ghost_imports;
+      dealii::TrilinosWrappers::MPI::Vector f_int, f_ext, u_ghosted;
+      Solvers::LinearSolver                 solver;
+      double                                force_scale = 0.;
       bool tangent_stale = false; // residual() asked, solve_linear builds
       std::vector<dealii::Tensor<1, dim>> last_reactions;
       std::size_t                         n_matrix_entries = 0;

@@ -276,6 +276,28 @@ namespace pdfem
         return d;
       }
 
+      /// Whether the bounding box of @p crack meets that of the ball
+      /// (@p center, @p radius): false only if the crack misses the ball.
+      template <int dim>
+      bool
+      meets_ball(const Mesh::Crack<dim> &crack,
+                 const Point<dim>       &center,
+                 const double            radius)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            double lo = crack.points[0][d], hi = lo;
+            for (unsigned int i = 1; i < dim; ++i)
+              {
+                lo = std::min(lo, crack.points[i][d]);
+                hi = std::max(hi, crack.points[i][d]);
+              }
+            if (lo > center[d] + radius || hi < center[d] - radius)
+              return false;
+          }
+        return true;
+      }
+
       /// The bump q_s(d) = cos^2(pi d / 2w) for |d| < w (eq. 9.4) and its
       /// derivative.
       std::pair<double, double>
@@ -409,8 +431,9 @@ namespace pdfem
           lambda * trace(eps) * unit_symmetric_tensor<dim>() + 2. * mu * eps);
       };
 
-      // Only the crack pieces near the domain can hide a vertex.
-      std::vector<Mesh::Crack<dim>> near;
+      // Only the crack pieces near the domain can hide a vertex; per cell,
+      // those near the cell (near_cell).
+      std::vector<Mesh::Crack<dim>> near, near_cell;
       for (const auto &crack : cracks)
         if (rough_distance(origin, crack) <= 2. * reach)
           near.push_back(crack);
@@ -484,7 +507,7 @@ namespace pdfem
             for (unsigned int i = 0; i < fv.dofs_per_cell; ++i)
               {
                 const unsigned int k = node_of_dof[dofs[i]];
-                if (Mesh::cut_by_any(near, xq, results.position[k]))
+                if (Mesh::cut_by_any(near_cell, xq, results.position[k]))
                   continue;
                 weight += fv.shape_value(i, q);
                 G += fv.shape_value(i, q) * results.displacement_gradient[k];
@@ -531,6 +554,13 @@ namespace pdfem
           if (dim == 3 && std::abs(xc[dim - 1]) - s.radius[c] >= w)
             continue;
           const auto &cell = s.cells[c];
+          // A crack piece that hides a vertex from a point of the cell
+          // meets the cell's ball.
+          near_cell.clear();
+          if (s.pd[c])
+            for (const auto &crack : near)
+              if (meets_ball(crack, s.center[c], s.radius[c]))
+                near_cell.push_back(crack);
           fe_values.reinit(cell);
           const FEValues<dim> &fv = fe_values.get_present_fe_values();
           dofs.resize(fv.dofs_per_cell);

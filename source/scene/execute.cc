@@ -12,6 +12,7 @@
 #include <pdfem/io/json_writer.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -170,6 +171,8 @@ namespace pdfem
         json.value("ranks",
                    static_cast<unsigned long>(
                      Utilities::MPI::n_mpi_processes(comm)));
+        json.value("threads",
+                   static_cast<unsigned long>(MultithreadInfo::n_threads()));
         json.value("exit_state", exit_state);
         json.value("message", message);
         json.begin_object("problem");

@@ -1,0 +1,336 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// CoupledSystem: the matrix-free operator (PD kernel, K x, internal force)
+// and the block-Jacobi correction of the "amg fe" preconditioner.
+#include <pdfem/base/config.h>
+
+#include <deal.II/base/multithread_info.h>
+
+#include <algorithm>
+
+#include "coupled_system_impl.h"
+#include <Epetra_FEVector.h>
+#include <Epetra_Import.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
+
+namespace pdfem
+{
+  namespace Coupling
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /// y = b x for a symmetric tensor stored as deal.II's raw entries
+      /// (2D: 00, 11, 01; 3D: 00, 11, 22, 01, 02, 12).
+      template <int dim>
+      inline void
+      symmetric_product(const double *b, const double *x, double *y)
+      {
+        if constexpr (dim == 2)
+          {
+            y[0] = b[0] * x[0] + b[2] * x[1];
+            y[1] = b[2] * x[0] + b[1] * x[1];
+          }
+        else
+          {
+            y[0] = b[0] * x[0] + b[3] * x[1] + b[4] * x[2];
+            y[1] = b[3] * x[0] + b[1] * x[1] + b[5] * x[2];
+            y[2] = b[4] * x[0] + b[5] * x[1] + b[2] * x[2];
+          }
+      }
+
+      /// Run @p side on a worker thread while the calling thread runs
+      /// @p main (which may communicate: MPI stays on the calling thread).
+      /// With one thread, one after the other.
+      template <typename Main, typename Side>
+      void
+      run_alongside(const Main &main, const Side &side)
+      {
+        if (MultithreadInfo::n_threads() < 2)
+          {
+            main();
+            side();
+            return;
+          }
+        tbb::task_group group;
+        group.run(side);
+        main();
+        group.wait();
+      }
+    } // namespace
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::import_ghosts(
+      const TrilinosWrappers::MPI::Vector &v,
+      TrilinosWrappers::MPI::Vector       &ghosted) const
+    {
+      // deal.II's assignment builds a new Epetra_Import at every call (on
+      // plateCrack FC1, 7 % of the run); the imports are kept instead, one
+      // per pair of maps (compared by identity: Epetra's SameAs compares
+      // every index).
+      const Epetra_MultiVector &source = v.trilinos_vector();
+      Epetra_FEVector          &target = ghosted.trilinos_vector();
+      const auto               *from   = source.Map().DataPtr();
+      const auto               *to     = target.Map().DataPtr();
+      auto                      kept   = std::find_if(ghost_imports.begin(),
+                               ghost_imports.end(),
+                               [&](const auto &g) {
+                                 return g.source == from && g.target == to;
+                               });
+      if (kept == ghost_imports.end())
+        {
+          if (ghost_imports.size() == 4)
+            ghost_imports.erase(ghost_imports.begin());
+          ghost_imports.push_back(
+            {from,
+             to,
+             std::make_shared<Epetra_Import>(target.Map(), source.Map())});
+          kept = ghost_imports.end() - 1;
+        }
+      const Epetra_Import &ghost_import = *kept->import;
+      AssertThrow(target.Import(source, ghost_import, Insert) == 0,
+                  ExcMessage("ghost import failed"));
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::make_pd_chunks() const
+    {
+      // About 8 chunks per thread with equal numbers of bonds: the threads
+      // steal chunks, so one that also ran the FE product takes fewer.
+      const std::size_t n_owners = families.owners.size();
+      const std::size_t n_chunks =
+        std::min<std::size_t>(8 * MultithreadInfo::n_threads(), n_owners);
+      pd_chunks.assign(1, 0);
+      const double per_chunk = static_cast<double>(families.n_bonds()) /
+                               std::max<std::size_t>(1, n_chunks);
+      for (std::size_t o = 0; o < n_owners; ++o)
+        if (families.offsets[o + 1] >= per_chunk * pd_chunks.size() &&
+            pd_chunks.size() < n_chunks)
+          pd_chunks.push_back(o + 1);
+      if (pd_chunks.back() != n_owners)
+        pd_chunks.push_back(n_owners);
+      pd_force.assign(dim * n_owners, 0.);
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::compute_pd_forces(
+      const TrilinosWrappers::MPI::Vector &x) const
+    {
+      // Row k: V_k (-L_k) + sigma_k s_k over the intact bonds, with
+      //   L_k = sum_m (lambda + mu) b_m dx_m + mu tr(b_m) dx_m    (G_m dx_m)
+      //   sigma_k = C : sym(sum_m dx_m (x) a_m)                   (boundary)
+      // so the boundary term needs the gradient only, once per node. Raw
+      // local arrays: the ghosted x by relevant_lid. Each owner's sums run
+      // in the same order on any number of threads: the result is the same
+      // bit for bit.
+      static_assert(sizeof(SymmetricTensor<2, dim>) ==
+                      SymmetricTensor<2, dim>::n_independent_components *
+                        sizeof(double),
+                    "weight_b must be a packed array of doubles");
+      if (pd_force.size() != dim * families.owners.size() || pd_chunks.empty())
+        make_pd_chunks();
+      const double *xv = x.trilinos_vector()[0];
+      const double  lambda_mu =
+        settings.material.lambda() + settings.material.mu();
+      const double           mu = settings.material.mu();
+      constexpr unsigned int nb =
+        SymmetricTensor<2, dim>::n_independent_components;
+      const double *b_all =
+        weight_b.empty() ? nullptr : &weight_b[0].access_raw_entry(0);
+      const auto owners = [&](const std::size_t begin, const std::size_t end) {
+        for (std::size_t o = begin; o < end; ++o)
+          {
+            double *f = &pd_force[dim * o];
+            if (decoupled[o])
+              {
+                for (unsigned int c = 0; c < dim; ++c)
+                  f[c] = 0.;
+                continue;
+              }
+            const unsigned int k = families.owners[o];
+            double             xk[dim], dx[dim], bdx[dim];
+            double             bdx_sum[dim] = {}, trdx_sum[dim] = {};
+            for (unsigned int c = 0; c < dim; ++c)
+              xk[c] = xv[relevant_lid[k][c]];
+            const Tensor<1, dim> s        = boundary_area[k];
+            const bool           boundary = s.norm_square() > 0.;
+            Tensor<2, dim>       grad_u;
+            for (std::size_t j = families.offsets[o];
+                 j < families.offsets[o + 1];
+                 ++j)
+              {
+                if (!families.intact[j])
+                  continue;
+                const auto &lid = relevant_lid[families.members[j]];
+                for (unsigned int c = 0; c < dim; ++c)
+                  dx[c] = xv[lid[c]] - xk[c];
+                const double *b  = b_all + nb * j;
+                double        tr = b[0] + b[1];
+                if constexpr (dim == 3)
+                  tr += b[2];
+                symmetric_product<dim>(b, dx, bdx);
+                for (unsigned int c = 0; c < dim; ++c)
+                  {
+                    bdx_sum[c] += bdx[c];
+                    trdx_sum[c] += tr * dx[c];
+                  }
+                if (boundary)
+                  for (unsigned int c = 0; c < dim; ++c)
+                    for (unsigned int d = 0; d < dim; ++d)
+                      grad_u[c][d] += dx[c] * weight_a[j][d];
+              }
+            for (unsigned int c = 0; c < dim; ++c)
+              f[c] =
+                -pd_volume[k] * (lambda_mu * bdx_sum[c] + mu * trdx_sum[c]);
+            if (boundary)
+              {
+                const Tensor<1, dim> t = pdlsm.stress(grad_u) * s;
+                for (unsigned int c = 0; c < dim; ++c)
+                  f[c] += t[c];
+              }
+          }
+      };
+      if (MultithreadInfo::n_threads() < 2)
+        owners(0, families.owners.size());
+      else
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0,
+                                                          pd_chunks.size() - 1,
+                                                          1),
+                          [&](const tbb::blocked_range<std::size_t> &r) {
+                            for (std::size_t i = r.begin(); i < r.end(); ++i)
+                              owners(pd_chunks[i], pd_chunks[i + 1]);
+                          });
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::add_pd_forces(
+      TrilinosWrappers::MPI::Vector &y) const
+    {
+      double *yv = y.trilinos_vector()[0];
+      for (std::size_t o = 0; o < families.owners.size(); ++o)
+        for (unsigned int c = 0; c < dim; ++c)
+          yv[owned_lid[families.owners[o]][c]] += pd_force[dim * o + c];
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::compute_internal_force(
+      const TrilinosWrappers::MPI::Vector &u)
+    {
+      // f_int = K_FE u + PD(u); every PD row is owned. The FE product and
+      // the PD kernel run side by side.
+      import_ghosts(u, u_ghosted);
+      run_alongside([&] { fe_matrix.vmult(x_masked, u); },
+                    [&] { compute_pd_forces(u_ghosted); });
+      f_int = 0.;
+      f_int += x_masked;
+      add_pd_forces(f_int);
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::vmult(
+      TrilinosWrappers::MPI::Vector       &y,
+      const TrilinosWrappers::MPI::Vector &x) const
+    {
+      // y = K x with held DoFs eliminated: x with its held entries zeroed
+      // through the FE matrix and the PD kernel (side by side), then the
+      // diagonal on the held rows.
+      x_masked         = x;
+      double       *xm = x_masked.trilinos_vector()[0];
+      const double *xv = x.trilinos_vector()[0];
+      for (unsigned int i = 0; i < held_lid.size(); ++i)
+        xm[held_lid[i]] = 0.;
+      import_ghosts(x_masked, x_ghosted);
+      run_alongside([&] { fe_matrix.vmult(y, x_masked); },
+                    [&] { compute_pd_forces(x_ghosted); });
+      add_pd_forces(y);
+      double *yv = y.trilinos_vector()[0];
+      for (unsigned int i = 0; i < held_lid.size(); ++i)
+        yv[held_lid[i]] = held_value[i] * xv[held_lid[i]];
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::make_block_jacobi()
+    {
+      // D_k = FE diagonal block + PD block d(row k)/d(u_k); held DoFs get
+      // their diagonal entry alone.
+      block_inverse.assign(owned_nodes.size(), Tensor<2, dim>());
+      for (std::size_t n = 0; n < owned_nodes.size(); ++n)
+        {
+          const unsigned int k = owned_nodes[n];
+          Tensor<2, dim>     D;
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              D[i][j] = fe_matrix.el(node_dof[k][i], node_dof[k][j]);
+          const std::size_t o = family_of[k];
+          if (o < families.owners.size() && !decoupled[o])
+            {
+              const Tensor<1, dim> s        = boundary_area[k];
+              const bool           boundary = s.norm_square() > 0.;
+              for (std::size_t j = families.offsets[o];
+                   j < families.offsets[o + 1];
+                   ++j)
+                if (families.intact[j])
+                  {
+                    D += pd_volume[k] * pdlsm.divergence_block(weight_b[j]);
+                    if (boundary)
+                      D -= pdlsm.traction_block(s, weight_a[j]);
+                  }
+            }
+          for (unsigned int i = 0; i < dim; ++i)
+            if (dof_fixed[node_dof[k][i]] ||
+                (o < families.owners.size() && decoupled[o]))
+              {
+                for (unsigned int j = 0; j < dim; ++j)
+                  D[i][j] = D[j][i] = 0.;
+                D[i][i] = held_diagonal(node_dof[k][i]);
+              }
+          block_inverse[n] = invert(D);
+        }
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::apply_block_jacobi(
+      TrilinosWrappers::MPI::Vector       &w,
+      const TrilinosWrappers::MPI::Vector &t) const
+    {
+      const double  *tv = t.trilinos_vector()[0];
+      double        *wv = w.trilinos_vector()[0];
+      Tensor<1, dim> tk;
+      for (std::size_t n = 0; n < owned_nodes.size(); ++n)
+        {
+          const auto &lid = owned_lid[owned_nodes[n]];
+          for (unsigned int c = 0; c < dim; ++c)
+            tk[c] = tv[lid[c]];
+          const Tensor<1, dim> wk = block_inverse[n] * tk;
+          for (unsigned int c = 0; c < dim; ++c)
+            wv[lid[c]] = wk[c];
+        }
+    }
+
+#define INSTANTIATE(dim)                                                    \
+  template void CoupledSystem<dim>::Impl::import_ghosts(                    \
+    const TrilinosWrappers::MPI::Vector &, TrilinosWrappers::MPI::Vector &) \
+    const;                                                                  \
+  template void CoupledSystem<dim>::Impl::compute_internal_force(           \
+    const TrilinosWrappers::MPI::Vector &);                                 \
+  template void CoupledSystem<dim>::Impl::vmult(                            \
+    TrilinosWrappers::MPI::Vector &, const TrilinosWrappers::MPI::Vector &) \
+    const;                                                                  \
+  template void CoupledSystem<dim>::Impl::make_block_jacobi();              \
+  template void CoupledSystem<dim>::Impl::apply_block_jacobi(               \
+    TrilinosWrappers::MPI::Vector &, const TrilinosWrappers::MPI::Vector &) \
+    const;
+    PDFEM_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace Coupling
+} // namespace pdfem
