@@ -57,6 +57,40 @@ namespace pdfem
         pending.get();
     }
 
+    // Three bytes give four characters. deal.II's encoder goes through
+    // boost's iterator adaptors: 3 % of plateCrack FC1, on the thread beside
+    // the solver.
+    std::string
+    internal::base64(const std::vector<unsigned char> &bytes)
+    {
+      static constexpr char alphabet[] =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+      std::string       out;
+      const std::size_t n = bytes.size();
+      out.reserve(4 * ((n + 2) / 3));
+      std::size_t i = 0;
+      for (; i + 2 < n; i += 3)
+        {
+          const std::uint32_t v =
+            (bytes[i] << 16) | (bytes[i + 1] << 8) | bytes[i + 2];
+          out += alphabet[(v >> 18) & 63];
+          out += alphabet[(v >> 12) & 63];
+          out += alphabet[(v >> 6) & 63];
+          out += alphabet[v & 63];
+        }
+      if (i < n)
+        {
+          const bool          two = i + 1 < n;
+          const std::uint32_t v =
+            (bytes[i] << 16) | (two ? bytes[i + 1] << 8 : 0);
+          out += alphabet[(v >> 18) & 63];
+          out += alphabet[(v >> 12) & 63];
+          out += two ? alphabet[(v >> 6) & 63] : '=';
+          out += '=';
+        }
+      return out;
+    }
+
     namespace
     {
       /// One named array of a VTU piece: Float32 values, @p components per
@@ -88,7 +122,7 @@ namespace pdfem
         std::memcpy(bytes.data(), &n, sizeof(n));
         if (n > 0)
           std::memcpy(bytes.data() + sizeof(n), data.data(), n);
-        return Utilities::encode_base64(bytes);
+        return internal::base64(bytes);
       }
 
       void

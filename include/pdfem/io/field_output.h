@@ -14,6 +14,14 @@ namespace pdfem
 {
   namespace IO
   {
+    namespace internal
+    {
+      /// Base64 (RFC 4648, with '=' padding) of @p bytes, for the VTU
+      /// writer's inline binary arrays.
+      std::string
+      base64(const std::vector<unsigned char> &bytes);
+    } // namespace internal
+
     /**
      * Field output of a run: `solution-NNNNN.pvtu` (one `.vtu` piece per
      * rank) with displacement, stress components, principal stresses, von
