@@ -96,9 +96,10 @@ namespace pdfem
       void
       import_ghosts(const dealii::TrilinosWrappers::MPI::Vector &v,
                     dealii::TrilinosWrappers::MPI::Vector       &ghosted) const;
-      /// Split the owners into pd_chunks; size pd_force.
+      /// Split the owners into pd_chunks and size pd_force, once the
+      /// families are made.
       void
-      make_pd_chunks() const;
+      make_pd_chunks();
       /// Tractions and body force at load factor @p t, into f_ext.
       void
       assemble_external(double t);
@@ -241,7 +242,7 @@ namespace pdfem
       mutable dealii::TrilinosWrappers::MPI::Vector x_ghosted, x_masked;
       /// Owner ranges [pd_chunks[i], pd_chunks[i + 1]) with about equal
       /// numbers of bonds, for the threads of compute_pd_forces().
-      mutable std::vector<std::size_t> pd_chunks;
+      std::vector<std::size_t> pd_chunks;
       /// PD forces per owner (dim entries each), see compute_pd_forces().
       mutable std::vector<double> pd_force;
       /// Owned -> ghosted imports by the identity of their maps' data

@@ -97,7 +97,7 @@ namespace pdfem
 
     template <int dim>
     void
-    CoupledSystem<dim>::Impl::make_pd_chunks() const
+    CoupledSystem<dim>::Impl::make_pd_chunks()
     {
       // About 8 chunks per thread with equal numbers of bonds: the threads
       // steal chunks, so one that also ran the FE product takes fewer.
@@ -132,8 +132,6 @@ namespace pdfem
                       SymmetricTensor<2, dim>::n_independent_components *
                         sizeof(double),
                     "weight_b must be a packed array of doubles");
-      if (pd_force.size() != dim * families.owners.size() || pd_chunks.empty())
-        make_pd_chunks();
       const double *xv = x.trilinos_vector()[0];
       const double  lambda_mu =
         settings.material.lambda() + settings.material.mu();
@@ -318,6 +316,7 @@ namespace pdfem
     }
 
 #define INSTANTIATE(dim)                                                    \
+  template void CoupledSystem<dim>::Impl::make_pd_chunks();                 \
   template void CoupledSystem<dim>::Impl::import_ghosts(                    \
     const TrilinosWrappers::MPI::Vector &, TrilinosWrappers::MPI::Vector &) \
     const;                                                                  \
