@@ -153,7 +153,7 @@ namespace pdfem
         const std::vector<unsigned int>           &group);
 
       /// summary.json's opening members: version, scene, input file,
-      /// dimension, ranks, exit state, message and the problem sizes
+      /// dimension, ranks, threads, exit state, message and the problem sizes
       /// (bonds broken and nodes decoupled from @p final_size).
       template <int dim>
       void
