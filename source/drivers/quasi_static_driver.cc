@@ -26,10 +26,12 @@ namespace pdfem
                                  1. / settings.load_steps;
       double       t =
         settings.initial_load >= 0. ? settings.initial_load : increment;
+      double t_of_u = 0.; // the load factor u is in equilibrium with
       for (unsigned int step = 1; step <= settings.load_steps; ++step)
         {
           const StepRecord record =
-            equilibrate(system(), u, t, step, settings, time_spent);
+            equilibrate(system(), u, t, t_of_u, step, settings, time_spent);
+          t_of_u                  = t;
           const GrowthCheck check = after_step(record);
           if (check.separated)
             {

@@ -27,12 +27,15 @@ namespace pdfem
     equilibrate(SystemInterface          &system,
                 SystemInterface::Vector  &u,
                 const double              t,
+                const double              t_of_u,
                 const unsigned int        step,
                 const Parameters::Driver &settings,
                 DriverTimings            &time_spent)
     {
       using clock = std::chrono::steady_clock;
       SystemInterface::Vector r, du;
+      if (t_of_u > 0. && t != t_of_u)
+        u *= t / t_of_u;
       system.apply_dirichlet(u, t);
 
       StepRecord record;
@@ -91,8 +94,13 @@ namespace pdfem
     {
       const unsigned int n_steps = settings.load_steps;
       for (unsigned int step = 1; step <= n_steps; ++step)
-        on_step(equilibrate(
-          system, u, double(step) / n_steps, step, settings, time_spent));
+        on_step(equilibrate(system,
+                            u,
+                            double(step) / n_steps,
+                            double(step - 1) / n_steps,
+                            step,
+                            settings,
+                            time_spent));
     }
   } // namespace Drivers
 } // namespace pdfem

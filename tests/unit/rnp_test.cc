@@ -689,8 +689,10 @@ namespace
           expected += 2. - 2. * std::cos(k * M_PI / (n + 1)) - sigma < 0.;
         ASSERT_TRUE(T.factorize());
         EXPECT_EQ(T.n_negative_pivots(), expected) << "sigma " << sigma;
-        if (sigma > 0.)
-          EXPECT_GT(expected, 0u); // the indefinite cases are indefinite
+        if (sigma > 0.) // the indefinite cases are indefinite
+          {
+            EXPECT_GT(expected, 0u);
+          }
         std::vector<double> x(n);
         for (unsigned int i = 0; i < n; ++i)
           x[i] = std::sin(0.3 * i) + 1.;

@@ -26,12 +26,12 @@ namespace pdfem
 
     /**
      * Quasi-static crack growth (specs/004 §2.2, P Fig. 5), for any
-     * criterion: at each step, equilibrium at load factor t (warm-started
-     * from the last solution), then the criterion. Where a crack grew, t is
-     * held and the next step finds the new equilibrium with the longer
-     * crack; otherwise t grows by the nominal increment dt, or, with `Jump
-     * to critical load`, by (r - 1) t with r = 1.001 x critical load ratio
-     * when that is smaller (the load extrapolated linearly to where the
+     * criterion: at each step, equilibrium at load factor t (from the last
+     * solution scaled to t: see equilibrate()), then the criterion. Where a
+     * crack grew, t is held and the next step finds the new equilibrium with
+     * the longer crack; otherwise t grows by the nominal increment dt, or, with
+     * `Jump to critical load`, by (r - 1) t with r = 1.001 x critical load
+     * ratio when that is smaller (the load extrapolated linearly to where the
      * criterion is met: PDLSM-FEM's rule). The run ends after `Load steps`
      * steps, or when the body is cut through (RunFailure "separated").
      */

@@ -31,16 +31,24 @@ namespace pdfem
     };
 
     /**
-     * Equilibrium at load factor @p t: set the prescribed DoFs, then Newton
-     * iterations K du = r, u += du until
+     * Equilibrium at load factor @p t: predict, set the prescribed DoFs,
+     * then Newton iterations K du = r, u += du until
      * |r| <= tol * max(|r_0|, |f_ext|, |f_int|) (see StaticDriver). Throws
      * RunFailure("diverged") after `Max iterations`. @p step only labels
      * the record and messages.
+     *
+     * The predictor: if @p u is the equilibrium at load factor
+     * @p t_of_u > 0, it is scaled by t / t_of_u. For the linear coupled
+     * problem with loads proportional to t (the drivers' assumption) that
+     * is the new equilibrium to rounding, which the first residual accepts
+     * without a linear solve; otherwise it is a first guess for Newton.
+     * Pass 0 for no prediction.
      */
     StepRecord
     equilibrate(SystemInterface          &system,
                 SystemInterface::Vector  &u,
                 double                    t,
+                double                    t_of_u,
                 unsigned int              step,
                 const Parameters::Driver &settings,
                 DriverTimings            &time_spent);
