@@ -16,6 +16,17 @@ namespace pdfem
     using namespace dealii;
 
     template <int dim>
+    void
+    CoupledSystem<dim>::Impl::bonds_changed()
+    {
+      update_decoupled();
+      update_held();
+      update_pd_bond_blocks();
+      block_inverse.clear(); // rebuilt by the next solve
+      auxiliary_stale = matrix_free;
+    }
+
+    template <int dim>
     unsigned long
     CoupledSystem<dim>::break_bonds(const std::vector<Mesh::Crack<dim>> &cracks)
     {
@@ -81,10 +92,7 @@ namespace pdfem
       n = Utilities::MPI::sum(n, s.comm);
       if (n > 0)
         {
-          s.update_decoupled();
-          s.update_held();
-          s.block_inverse.clear(); // rebuilt by the next solve
-          s.auxiliary_stale = s.matrix_free;
+          s.bonds_changed();
         }
       return n;
     }
@@ -113,10 +121,7 @@ namespace pdfem
       n = Utilities::MPI::sum(n, s.comm);
       if (n > 0)
         {
-          s.update_decoupled();
-          s.update_held();
-          s.block_inverse.clear();
-          s.auxiliary_stale = s.matrix_free;
+          s.bonds_changed();
         }
       return n;
     }
@@ -196,6 +201,7 @@ namespace pdfem
     }
 
 #define INSTANTIATE(dim)                                                    \
+  template void          CoupledSystem<dim>::Impl::bonds_changed();         \
   template unsigned long CoupledSystem<dim>::break_bonds(                   \
     const std::vector<Mesh::Crack<dim>> &);                                 \
   template unsigned long CoupledSystem<dim>::break_bonds_if(                \

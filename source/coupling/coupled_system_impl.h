@@ -96,10 +96,18 @@ namespace pdfem
       void
       import_ghosts(const dealii::TrilinosWrappers::MPI::Vector &v,
                     dealii::TrilinosWrappers::MPI::Vector       &ghosted) const;
-      /// Split the owners into pd_chunks and size pd_force, once the
-      /// families are made.
+      /// Split the owners into pd_chunks, size pd_force and list each
+      /// bond's member lids (pd_bond_lid), once the families are made.
       void
       make_pd_chunks();
+      /// Refill pd_bond_block from the weights and bond states.
+      void
+      update_pd_bond_blocks();
+      /// After bonds broke (or families were refitted): decoupled and held
+      /// DoFs, kernel blocks; the block-Jacobi inverse and the auxiliary
+      /// matrix are rebuilt by the next solve.
+      void
+      bonds_changed();
       /// Tractions and body force at load factor @p t, into f_ext.
       void
       assemble_external(double t);
@@ -245,6 +253,13 @@ namespace pdfem
       std::vector<std::size_t> pd_chunks;
       /// PD forces per owner (dim entries each), see compute_pd_forces().
       mutable std::vector<double> pd_force;
+      /// Per bond: the member's lids in the ghosted vectors.
+      std::vector<std::array<unsigned int, dim>> pd_bond_lid;
+      /// Per bond: -V_k G_m, G_m = (lambda + mu) b_m + mu tr(b_m) I, as the
+      /// raw entries of a symmetric tensor; zero once the bond is broken.
+      /// compute_pd_forces() reads these alone (not weight_b, the member
+      /// list, the bond states).
+      std::vector<double> pd_bond_block;
       /// Owned -> ghosted imports by the identity of their maps' data
       /// (import_ghosts()): the maps of a vector stay while it lives.
       struct GhostImport

@@ -114,6 +114,31 @@ namespace pdfem
       if (pd_chunks.back() != n_owners)
         pd_chunks.push_back(n_owners);
       pd_force.assign(dim * n_owners, 0.);
+      pd_bond_lid.resize(families.n_bonds());
+      for (std::size_t j = 0; j < families.n_bonds(); ++j)
+        pd_bond_lid[j] = relevant_lid[families.members[j]];
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::update_pd_bond_blocks()
+    {
+      constexpr unsigned int nb =
+        SymmetricTensor<2, dim>::n_independent_components;
+      pd_bond_block.assign(nb * families.n_bonds(), 0.);
+      for (std::size_t o = 0; o < families.owners.size(); ++o)
+        {
+          const double V = pd_volume[families.owners[o]];
+          for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
+               ++j)
+            if (families.intact[j])
+              {
+                const SymmetricTensor<2, dim> G =
+                  -V * symmetrize(pdlsm.divergence_block(weight_b[j]));
+                for (unsigned int i = 0; i < nb; ++i)
+                  pd_bond_block[nb * j + i] = G.access_raw_entry(i);
+              }
+        }
     }
 
     template <int dim>
@@ -121,25 +146,17 @@ namespace pdfem
     CoupledSystem<dim>::Impl::compute_pd_forces(
       const TrilinosWrappers::MPI::Vector &x) const
     {
-      // Row k: V_k (-L_k) + sigma_k s_k over the intact bonds, with
-      //   L_k = sum_m (lambda + mu) b_m dx_m + mu tr(b_m) dx_m    (G_m dx_m)
-      //   sigma_k = C : sym(sum_m dx_m (x) a_m)                   (boundary)
+      // Row k: sum_m -V_k G_m dx_m + sigma_k s_k over the intact bonds,
+      // with -V_k G_m from pd_bond_block (zero for broken bonds) and
+      //   sigma_k = C : sym(sum_m dx_m (x) a_m)       (boundary nodes only)
       // so the boundary term needs the gradient only, once per node. Raw
-      // local arrays: the ghosted x by relevant_lid. Each owner's sums run
+      // local arrays: the ghosted x by pd_bond_lid. Each owner's sums run
       // in the same order on any number of threads: the result is the same
       // bit for bit.
-      static_assert(sizeof(SymmetricTensor<2, dim>) ==
-                      SymmetricTensor<2, dim>::n_independent_components *
-                        sizeof(double),
-                    "weight_b must be a packed array of doubles");
-      const double *xv = x.trilinos_vector()[0];
-      const double  lambda_mu =
-        settings.material.lambda() + settings.material.mu();
-      const double           mu = settings.material.mu();
+      const double          *xv = x.trilinos_vector()[0];
       constexpr unsigned int nb =
         SymmetricTensor<2, dim>::n_independent_components;
-      const double *b_all =
-        weight_b.empty() ? nullptr : &weight_b[0].access_raw_entry(0);
+      const double *blocks = pd_bond_block.data();
       const auto owners = [&](const std::size_t begin, const std::size_t end) {
         for (std::size_t o = begin; o < end; ++o)
           {
@@ -151,8 +168,7 @@ namespace pdfem
                 continue;
               }
             const unsigned int k = families.owners[o];
-            double             xk[dim], dx[dim], bdx[dim];
-            double             bdx_sum[dim] = {}, trdx_sum[dim] = {};
+            double             xk[dim], dx[dim], gdx[dim], sum[dim] = {};
             for (unsigned int c = 0; c < dim; ++c)
               xk[c] = xv[relevant_lid[k][c]];
             const Tensor<1, dim> s        = boundary_area[k];
@@ -162,35 +178,25 @@ namespace pdfem
                  j < families.offsets[o + 1];
                  ++j)
               {
-                if (!families.intact[j])
-                  continue;
-                const auto &lid = relevant_lid[families.members[j]];
+                const auto &lid = pd_bond_lid[j];
                 for (unsigned int c = 0; c < dim; ++c)
                   dx[c] = xv[lid[c]] - xk[c];
-                const double *b  = b_all + nb * j;
-                double        tr = b[0] + b[1];
-                if constexpr (dim == 3)
-                  tr += b[2];
-                symmetric_product<dim>(b, dx, bdx);
+                symmetric_product<dim>(blocks + nb * j, dx, gdx);
                 for (unsigned int c = 0; c < dim; ++c)
-                  {
-                    bdx_sum[c] += bdx[c];
-                    trdx_sum[c] += tr * dx[c];
-                  }
-                if (boundary)
+                  sum[c] += gdx[c];
+                if (boundary && families.intact[j])
                   for (unsigned int c = 0; c < dim; ++c)
                     for (unsigned int d = 0; d < dim; ++d)
                       grad_u[c][d] += dx[c] * weight_a[j][d];
               }
-            for (unsigned int c = 0; c < dim; ++c)
-              f[c] =
-                -pd_volume[k] * (lambda_mu * bdx_sum[c] + mu * trdx_sum[c]);
             if (boundary)
               {
                 const Tensor<1, dim> t = pdlsm.stress(grad_u) * s;
                 for (unsigned int c = 0; c < dim; ++c)
-                  f[c] += t[c];
+                  sum[c] += t[c];
               }
+            for (unsigned int c = 0; c < dim; ++c)
+              f[c] = sum[c];
           }
       };
       if (MultithreadInfo::n_threads() < 2)
@@ -317,6 +323,7 @@ namespace pdfem
 
 #define INSTANTIATE(dim)                                                    \
   template void CoupledSystem<dim>::Impl::make_pd_chunks();                 \
+  template void CoupledSystem<dim>::Impl::update_pd_bond_blocks();          \
   template void CoupledSystem<dim>::Impl::import_ghosts(                    \
     const TrilinosWrappers::MPI::Vector &, TrilinosWrappers::MPI::Vector &) \
     const;                                                                  \

@@ -665,6 +665,7 @@ namespace pdfem
       impl->make_pd_boundary();
       impl->make_families();
       impl->make_pd_chunks();
+      impl->update_pd_bond_blocks();
       impl->make_sparsity();
       impl->update_held();
       impl->assemble_fe_matrix();
