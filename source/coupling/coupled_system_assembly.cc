@@ -345,7 +345,6 @@ namespace pdfem
               for (unsigned int j = 0; j < dim; ++j)
                 K[i * n_cols + dim * block + j] += factor * B[i][j];
           };
-          const double         Vk       = pd_volume[k];
           const Tensor<1, dim> s        = boundary_area[k];
           const bool           boundary = s.norm_square() > 0.;
           std::size_t          block    = 0;
@@ -357,7 +356,7 @@ namespace pdfem
               if (!families.intact[j])
                 continue;
               ++block;
-              Tensor<2, dim> B = -Vk * pdlsm.divergence_block(weight_b[j]);
+              Tensor<2, dim> B = bond_block[j];
               if (boundary)
                 B += pdlsm.traction_block(s, weight_a[j]);
               add_block(block, B, 1.);

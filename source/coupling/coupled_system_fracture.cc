@@ -19,9 +19,9 @@ namespace pdfem
     void
     CoupledSystem<dim>::Impl::bonds_changed()
     {
+      zero_broken_bond_blocks();
       update_decoupled();
       update_held();
-      update_pd_bond_blocks();
       block_inverse.clear(); // rebuilt by the next solve
       auxiliary_stale = matrix_free;
     }

@@ -96,18 +96,24 @@ namespace pdfem
       void
       import_ghosts(const dealii::TrilinosWrappers::MPI::Vector &v,
                     dealii::TrilinosWrappers::MPI::Vector       &ghosted) const;
-      /// Split the owners into pd_chunks, size pd_force and list each
-      /// bond's member lids (pd_bond_lid), once the families are made.
+      /// Split the owners into pd_chunks and size pd_force, once the
+      /// families are made.
       void
       make_pd_chunks();
-      /// Refill pd_bond_block from the weights and bond states.
-      void
-      update_pd_bond_blocks();
-      /// After bonds broke (or families were refitted): decoupled and held
-      /// DoFs, kernel blocks; the block-Jacobi inverse and the auxiliary
-      /// matrix are rebuilt by the next solve.
+      /// After bonds broke (or families were refitted): the broken bonds'
+      /// blocks are zeroed, decoupled and held DoFs listed again; the
+      /// block-Jacobi inverse and the auxiliary matrix are rebuilt by the
+      /// next solve.
       void
       bonds_changed();
+      /// Zero the blocks of the broken bonds.
+      void
+      zero_broken_bond_blocks();
+      /// The bond block of owner @p k for the PDLSM weight @p b (see
+      /// bond_block).
+      dealii::SymmetricTensor<2, dim>
+      make_bond_block(unsigned int                           k,
+                      const dealii::SymmetricTensor<2, dim> &b) const;
       /// Tractions and body force at load factor @p t, into f_ext.
       void
       assemble_external(double t);
@@ -217,9 +223,13 @@ namespace pdfem
       std::vector<std::uint8_t> decoupled; // per family owner (see above)
       /// Local index of each DoF of a node in the ghosted (relevant) vectors
       /// and, for owned nodes, in the owned vectors.
-      std::vector<std::array<unsigned int, dim>>   relevant_lid, owned_lid;
-      std::vector<dealii::Tensor<1, dim>>          weight_a; // per bond
-      std::vector<dealii::SymmetricTensor<2, dim>> weight_b; // per bond
+      std::vector<std::array<unsigned int, dim>> relevant_lid, owned_lid;
+      std::vector<dealii::Tensor<1, dim>>        weight_a; // per bond
+      /// Per bond: -V_k G_m with G_m = (lambda + mu) b_m + mu tr(b_m) I, the
+      /// divergence block of the PDLSM weight b_m (the bond's coupling in
+      /// row k, specs/004 §1.2); zero once the bond is broken, so that the
+      /// kernel sums over all bonds without testing their states.
+      std::vector<dealii::SymmetricTensor<2, dim>> bond_block;
 
       // ----- boundary conditions
       std::vector<std::uint8_t> dof_fixed;     // all DoFs (replicated)
@@ -253,13 +263,6 @@ namespace pdfem
       std::vector<std::size_t> pd_chunks;
       /// PD forces per owner (dim entries each), see compute_pd_forces().
       mutable std::vector<double> pd_force;
-      /// Per bond: the member's lids in the ghosted vectors.
-      std::vector<std::array<unsigned int, dim>> pd_bond_lid;
-      /// Per bond: -V_k G_m, G_m = (lambda + mu) b_m + mu tr(b_m) I, as the
-      /// raw entries of a symmetric tensor; zero once the bond is broken.
-      /// compute_pd_forces() reads these alone (not weight_b, the member
-      /// list, the bond states).
-      std::vector<double> pd_bond_block;
       /// Owned -> ghosted imports by the identity of their maps' data
       /// (import_ghosts()): the maps of a vector stay while it lives.
       struct GhostImport

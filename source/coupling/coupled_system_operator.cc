@@ -114,31 +114,6 @@ namespace pdfem
       if (pd_chunks.back() != n_owners)
         pd_chunks.push_back(n_owners);
       pd_force.assign(dim * n_owners, 0.);
-      pd_bond_lid.resize(families.n_bonds());
-      for (std::size_t j = 0; j < families.n_bonds(); ++j)
-        pd_bond_lid[j] = relevant_lid[families.members[j]];
-    }
-
-    template <int dim>
-    void
-    CoupledSystem<dim>::Impl::update_pd_bond_blocks()
-    {
-      constexpr unsigned int nb =
-        SymmetricTensor<2, dim>::n_independent_components;
-      pd_bond_block.assign(nb * families.n_bonds(), 0.);
-      for (std::size_t o = 0; o < families.owners.size(); ++o)
-        {
-          const double V = pd_volume[families.owners[o]];
-          for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
-               ++j)
-            if (families.intact[j])
-              {
-                const SymmetricTensor<2, dim> G =
-                  -V * symmetrize(pdlsm.divergence_block(weight_b[j]));
-                for (unsigned int i = 0; i < nb; ++i)
-                  pd_bond_block[nb * j + i] = G.access_raw_entry(i);
-              }
-        }
     }
 
     template <int dim>
@@ -146,17 +121,22 @@ namespace pdfem
     CoupledSystem<dim>::Impl::compute_pd_forces(
       const TrilinosWrappers::MPI::Vector &x) const
     {
-      // Row k: sum_m -V_k G_m dx_m + sigma_k s_k over the intact bonds,
-      // with -V_k G_m from pd_bond_block (zero for broken bonds) and
-      //   sigma_k = C : sym(sum_m dx_m (x) a_m)       (boundary nodes only)
-      // so the boundary term needs the gradient only, once per node. Raw
-      // local arrays: the ghosted x by pd_bond_lid. Each owner's sums run
-      // in the same order on any number of threads: the result is the same
-      // bit for bit.
+      // Row k: sum_m -V_k G_m dx_m + sigma_k s_k, with -V_k G_m from
+      // bond_block (zero for broken bonds: no state tests) and
+      //   sigma_k = C : sym(sum_m dx_m (x) a_m) over the intact bonds
+      // (boundary nodes only), so the boundary term needs the gradient
+      // only, once per node. Raw local arrays: the ghosted x by
+      // relevant_lid. Each owner's sums run in the same order on any
+      // number of threads: the result is the same bit for bit.
+      static_assert(sizeof(SymmetricTensor<2, dim>) ==
+                      SymmetricTensor<2, dim>::n_independent_components *
+                        sizeof(double),
+                    "bond_block must be a packed array of doubles");
       const double          *xv = x.trilinos_vector()[0];
       constexpr unsigned int nb =
         SymmetricTensor<2, dim>::n_independent_components;
-      const double *blocks = pd_bond_block.data();
+      const double *blocks =
+        bond_block.empty() ? nullptr : &bond_block[0].access_raw_entry(0);
       const auto owners = [&](const std::size_t begin, const std::size_t end) {
         for (std::size_t o = begin; o < end; ++o)
           {
@@ -178,7 +158,7 @@ namespace pdfem
                  j < families.offsets[o + 1];
                  ++j)
               {
-                const auto &lid = pd_bond_lid[j];
+                const auto &lid = relevant_lid[families.members[j]];
                 for (unsigned int c = 0; c < dim; ++c)
                   dx[c] = xv[lid[c]] - xk[c];
                 symmetric_product<dim>(blocks + nb * j, dx, gdx);
@@ -282,12 +262,11 @@ namespace pdfem
               for (std::size_t j = families.offsets[o];
                    j < families.offsets[o + 1];
                    ++j)
-                if (families.intact[j])
-                  {
-                    D += pd_volume[k] * pdlsm.divergence_block(weight_b[j]);
-                    if (boundary)
-                      D -= pdlsm.traction_block(s, weight_a[j]);
-                  }
+                {
+                  D -= Tensor<2, dim>(bond_block[j]); // zero if broken
+                  if (boundary && families.intact[j])
+                    D -= pdlsm.traction_block(s, weight_a[j]);
+                }
             }
           for (unsigned int i = 0; i < dim; ++i)
             if (dof_fixed[node_dof[k][i]] ||
@@ -323,7 +302,6 @@ namespace pdfem
 
 #define INSTANTIATE(dim)                                                    \
   template void CoupledSystem<dim>::Impl::make_pd_chunks();                 \
-  template void CoupledSystem<dim>::Impl::update_pd_bond_blocks();          \
   template void CoupledSystem<dim>::Impl::import_ghosts(                    \
     const TrilinosWrappers::MPI::Vector &, TrilinosWrappers::MPI::Vector &) \
     const;                                                                  \

@@ -229,7 +229,7 @@ namespace pdfem
           std::ostringstream where;
           for (std::size_t o = 0; o < families.owners.size() && n_bad > 0; ++o)
             if (families.offsets[o + 1] > families.offsets[o] &&
-                weight_b[families.offsets[o]].norm() == 0.)
+                bond_block[families.offsets[o]].norm() == 0.)
               {
                 where << " (e.g. the node at (" << x[families.owners[o]]
                       << ") with "
@@ -269,7 +269,7 @@ namespace pdfem
           refit_families(cut_families);
           add_crack_face_area(settings.cracks);
         }
-
+      zero_broken_bond_blocks();
       update_decoupled();
 
       // Ghosts: every DoF of a family member or of a vertex of an owned
@@ -309,11 +309,29 @@ namespace pdfem
     }
 
     template <int dim>
+    SymmetricTensor<2, dim>
+    CoupledSystem<dim>::Impl::make_bond_block(
+      const unsigned int             k,
+      const SymmetricTensor<2, dim> &b) const
+    {
+      return -pd_volume[k] * symmetrize(pdlsm.divergence_block(b));
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::zero_broken_bond_blocks()
+    {
+      for (std::size_t j = 0; j < families.n_bonds(); ++j)
+        if (!families.intact[j])
+          bond_block[j] = SymmetricTensor<2, dim>();
+    }
+
+    template <int dim>
     unsigned int
     CoupledSystem<dim>::Impl::compute_weights()
     {
       weight_a.assign(families.n_bonds(), Tensor<1, dim>());
-      weight_b.assign(families.n_bonds(), SymmetricTensor<2, dim>());
+      bond_block.assign(families.n_bonds(), SymmetricTensor<2, dim>());
       std::vector<Tensor<1, dim>>          xi, a;
       std::vector<double>                  vol;
       std::vector<SymmetricTensor<2, dim>> b;
@@ -336,7 +354,8 @@ namespace pdfem
               continue;
             }
           std::copy(a.begin(), a.end(), weight_a.begin() + first);
-          std::copy(b.begin(), b.end(), weight_b.begin() + first);
+          for (std::size_t i = 0; i < b.size(); ++i)
+            bond_block[first + i] = make_bond_block(k, b[i]);
         }
       return n_failed;
     }
@@ -371,8 +390,8 @@ namespace pdfem
             continue;
           for (std::size_t i = 0; i < bond.size(); ++i)
             {
-              weight_a[bond[i]] = a[i];
-              weight_b[bond[i]] = b[i];
+              weight_a[bond[i]]   = a[i];
+              bond_block[bond[i]] = make_bond_block(k, b[i]);
             }
         }
     }
@@ -665,7 +684,6 @@ namespace pdfem
       impl->make_pd_boundary();
       impl->make_families();
       impl->make_pd_chunks();
-      impl->update_pd_bond_blocks();
       impl->make_sparsity();
       impl->update_held();
       impl->assemble_fe_matrix();
