@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <sstream>
 
 namespace pdfem
@@ -21,6 +23,20 @@ namespace pdfem
       seconds_since(const clock::time_point &start)
       {
         return std::chrono::duration<double>(clock::now() - start).count();
+      }
+
+      /// v -> v with its prescribed entries zeroed: apply_dirichlet(v, 0)
+      /// writes u_p(0) into them, and p0 holds u_p(0) there and 0 elsewhere.
+      std::function<void(SystemInterface::Vector &)>
+      free_part_of(SystemInterface &system)
+      {
+        auto p0 = std::make_shared<SystemInterface::Vector>();
+        system.initialize_vector(*p0);
+        system.apply_dirichlet(*p0, 0.);
+        return [&system, p0](SystemInterface::Vector &v) {
+          system.apply_dirichlet(v, 0.);
+          v -= *p0;
+        };
       }
     } // namespace
 
@@ -100,14 +116,8 @@ namespace pdfem
                       StabilityInterface                            *stability,
                       const LoadDerivative &load_derivative)
     {
-      result = NewtonOutcome();
-      SystemInterface::Vector p0;
-      system.initialize_vector(p0);
-      system.apply_dirichlet(p0, 0.);
-      const auto free_part = [&](SystemInterface::Vector &v) {
-        system.apply_dirichlet(v, 0.);
-        v -= p0;
-      };
+      result                            = NewtonOutcome();
+      const auto              free_part = free_part_of(system);
       SystemInterface::Vector last = u, previous = u;
       double                  t = 0., t_previous = 0.;
       const double            base  = 1. / std::max(1u, settings.load_steps);
@@ -405,16 +415,8 @@ namespace pdfem
       system.initialize_vector(dq);
       system.initialize_vector(dr);
       system.initialize_vector(q);
-      // The constraint measures the free DoFs only: zero the prescribed
-      // entries of v (apply_dirichlet writes u_p(0) into them, p0 holds
-      // u_p(0) there and 0 elsewhere).
-      SystemInterface::Vector p0;
-      system.initialize_vector(p0);
-      system.apply_dirichlet(p0, 0.);
-      const auto free_part = [&](SystemInterface::Vector &v) {
-        system.apply_dirichlet(v, 0.);
-        v -= p0;
-      };
+      // The constraint measures the free DoFs only.
+      const auto free_part = free_part_of(system);
       // ---- first step: load control
       StepRecord   first;
       const double t0 = 1. / std::max(1u, settings.load_steps);
