@@ -248,18 +248,31 @@ namespace pdfem
       // iterations with the uncut stiffness, 1 100 with factor 1e-2, 1 069
       // with 1e-3 or 0 (1e-3 keeps a node whose cells are all cut regular).
       // Bonds only break, so after the first assembly only the newly cut
-      // cells change: their stiffness is scaled down in place. A change in
-      // the held DoFs (a node lost its last bond) rebuilds the whole matrix.
+      // cells change: their stiffness is scaled down in place. A node that
+      // lost its last bond is held: its DoFs get the held diagonal added
+      // in place (their rows are not eliminated here, unlike prescribed
+      // ones). On plateCrack FC2 that saved 0.3 s of full rebuilds. Only a
+      // DoF leaving the held set, or a newly prescribed one, rebuilds the
+      // whole matrix.
       const std::vector<bool> cut = cells_cut_by_broken_bonds();
-      const bool              incremental =
-        Utilities::MPI::min(static_cast<int>(!auxiliary_cut.empty() &&
-                                             auxiliary_n_held ==
-                                               held_lid.size()),
+      std::vector<bool>       held(owned.n_elements(), false);
+      for (const unsigned int lid : held_lid)
+        held[lid] = true;
+      bool only_new_held_by_decoupling =
+        !auxiliary_cut.empty() && auxiliary_held.size() == held.size();
+      for (std::size_t i = 0; i < held.size() && only_new_held_by_decoupling;
+           ++i)
+        if (auxiliary_held[i] ? !held[i] :
+                                held[i] && dof_fixed[owned.nth_index_in_set(i)])
+          only_new_held_by_decoupling = false;
+      const bool incremental =
+        Utilities::MPI::min(static_cast<int>(only_new_held_by_decoupling),
                             comm) == 1;
       if (!incremental)
         {
           auxiliary = 0.;
           auxiliary_cut.assign(cut.size(), false);
+          auxiliary_held.assign(held.size(), false);
         }
       unsigned int n_changed = 0;
       for_each_cell_stiffness(
@@ -277,10 +290,15 @@ namespace pdfem
           add_to_matrix(auxiliary, local_dofs, local_dofs, K);
           ++n_changed;
         });
-      auxiliary_cut    = cut;
-      auxiliary_n_held = held_lid.size();
-      if (!incremental)
-        add_held_diagonal(auxiliary);
+      for (unsigned int i = 0; i < held_lid.size(); ++i)
+        if (!auxiliary_held[held_lid[i]])
+          {
+            const auto dof = owned.nth_index_in_set(held_lid[i]);
+            auxiliary.add(dof, dof, held_value[i]);
+            ++n_changed;
+          }
+      auxiliary_cut  = cut;
+      auxiliary_held = std::move(held);
       auxiliary.compress(VectorOperation::add);
       if (Utilities::MPI::sum(n_changed, comm) > 0)
         solver.preconditioner_matrix_changed();

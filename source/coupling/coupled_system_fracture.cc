@@ -147,6 +147,15 @@ namespace pdfem
     }
 
     template <int dim>
+    const TrilinosWrappers::SparseMatrix &
+    CoupledSystem<dim>::preconditioner_matrix()
+    {
+      if (impl->auxiliary_stale)
+        impl->assemble_auxiliary();
+      return impl->auxiliary;
+    }
+
+    template <int dim>
     unsigned int
     CoupledSystem<dim>::count_pieces(const unsigned int min_nodes) const
     {
@@ -200,16 +209,18 @@ namespace pdfem
       return pieces;
     }
 
-#define INSTANTIATE(dim)                                                    \
-  template void          CoupledSystem<dim>::Impl::bonds_changed();         \
-  template unsigned long CoupledSystem<dim>::break_bonds(                   \
-    const std::vector<Mesh::Crack<dim>> &);                                 \
-  template unsigned long CoupledSystem<dim>::break_bonds_if(                \
-    const std::function<bool(unsigned int, unsigned int)> &);               \
-  template const std::vector<double> &CoupledSystem<dim>::horizons() const; \
-  template std::vector<std::array<unsigned int, 2>>                         \
-                        CoupledSystem<dim>::intact_bonds() const;           \
-  template unsigned int CoupledSystem<dim>::count_pieces(unsigned int) const;
+#define INSTANTIATE(dim)                                                      \
+  template void          CoupledSystem<dim>::Impl::bonds_changed();           \
+  template unsigned long CoupledSystem<dim>::break_bonds(                     \
+    const std::vector<Mesh::Crack<dim>> &);                                   \
+  template unsigned long CoupledSystem<dim>::break_bonds_if(                  \
+    const std::function<bool(unsigned int, unsigned int)> &);                 \
+  template const std::vector<double> &CoupledSystem<dim>::horizons() const;   \
+  template std::vector<std::array<unsigned int, 2>>                           \
+                        CoupledSystem<dim>::intact_bonds() const;             \
+  template unsigned int CoupledSystem<dim>::count_pieces(unsigned int) const; \
+  template const TrilinosWrappers::SparseMatrix &                             \
+  CoupledSystem<dim>::preconditioner_matrix();
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace Coupling

@@ -25,6 +25,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -84,10 +85,14 @@ namespace pdfem
        * The PD internal forces of the owned families for the displacement
        * @p x (ghosted: owned and relevant entries), into pd_force: owner k
        * gets the sum over intact bonds of (-V_k G_m + T_m)(x_m - x_k). Works
-       * on the raw local arrays, in chunks on all threads.
+       * on the raw local arrays, in chunks on the threads of
+       * ThreadTeam::shared(). The calling thread first runs @p fe_product
+       * (which may communicate: MPI stays on that thread) and then joins
+       * the kernel.
        */
       void
-      compute_pd_forces(const dealii::TrilinosWrappers::MPI::Vector &x) const;
+      compute_pd_forces(const dealii::TrilinosWrappers::MPI::Vector &x,
+                        const std::function<void()> &fe_product) const;
       /// Add pd_force to the owned entries of @p y.
       void
       add_pd_forces(dealii::TrilinosWrappers::MPI::Vector &y) const;
@@ -251,10 +256,10 @@ namespace pdfem
       dealii::TrilinosWrappers::SparseMatrix auxiliary; // "amg fe" only
       /// Bonds broke since the auxiliary matrix was assembled.
       bool auxiliary_stale = false;
-      /// The cut cells and the number of held DoFs the auxiliary matrix was
-      /// assembled with (empty: not assembled yet).
+      /// The cut cells and the held DoFs (by owned-local index) the
+      /// auxiliary matrix was assembled with (empty: not assembled yet).
       std::vector<bool> auxiliary_cut;
-      std::size_t       auxiliary_n_held = 0;
+      std::vector<bool> auxiliary_held;
       /// The factor of a cut cell's stiffness in the auxiliary matrix.
       double                                        cut_cell_stiffness = 1e-3;
       mutable dealii::TrilinosWrappers::MPI::Vector x_ghosted, x_masked;

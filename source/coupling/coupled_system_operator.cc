@@ -2,17 +2,16 @@
 // CoupledSystem: the matrix-free operator (PD kernel, K x, internal force)
 // and the block-Jacobi correction of the "amg fe" preconditioner.
 #include <pdfem/base/config.h>
+#include <pdfem/base/thread_team.h>
 
 #include <deal.II/base/multithread_info.h>
 
 #include <algorithm>
+#include <atomic>
 
 #include "coupled_system_impl.h"
 #include <Epetra_FEVector.h>
 #include <Epetra_Import.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_group.h>
 
 namespace pdfem
 {
@@ -41,24 +40,6 @@ namespace pdfem
           }
       }
 
-      /// Run @p side on a worker thread while the calling thread runs
-      /// @p main (which may communicate: MPI stays on the calling thread).
-      /// With one thread, one after the other.
-      template <typename Main, typename Side>
-      void
-      run_alongside(const Main &main, const Side &side)
-      {
-        if (MultithreadInfo::n_threads() < 2)
-          {
-            main();
-            side();
-            return;
-          }
-        tbb::task_group group;
-        group.run(side);
-        main();
-        group.wait();
-      }
     } // namespace
 
     template <int dim>
@@ -103,7 +84,7 @@ namespace pdfem
       // steal chunks, so one that also ran the FE product takes fewer.
       const std::size_t n_owners = families.owners.size();
       const std::size_t n_chunks =
-        std::min<std::size_t>(8 * MultithreadInfo::n_threads(), n_owners);
+        std::min<std::size_t>(8 * ThreadTeam::shared().size(), n_owners);
       pd_chunks.assign(1, 0);
       const double per_chunk = static_cast<double>(families.n_bonds()) /
                                std::max<std::size_t>(1, n_chunks);
@@ -119,7 +100,8 @@ namespace pdfem
     template <int dim>
     void
     CoupledSystem<dim>::Impl::compute_pd_forces(
-      const TrilinosWrappers::MPI::Vector &x) const
+      const TrilinosWrappers::MPI::Vector &x,
+      const std::function<void()>         &fe_product) const
     {
       // Row k: sum_m -V_k G_m dx_m + sigma_k s_k, with -V_k G_m from
       // bond_block (zero for broken bonds: no state tests) and
@@ -179,16 +161,14 @@ namespace pdfem
               f[c] = sum[c];
           }
       };
-      if (MultithreadInfo::n_threads() < 2)
-        owners(0, families.owners.size());
-      else
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0,
-                                                          pd_chunks.size() - 1,
-                                                          1),
-                          [&](const tbb::blocked_range<std::size_t> &r) {
-                            for (std::size_t i = r.begin(); i < r.end(); ++i)
-                              owners(pd_chunks[i], pd_chunks[i + 1]);
-                          });
+      std::atomic<std::size_t> next_chunk{0};
+      ThreadTeam::shared().run([&](const unsigned int member) {
+        if (member == 0)
+          fe_product();
+        for (std::size_t i = next_chunk++; i + 1 < pd_chunks.size();
+             i             = next_chunk++)
+          owners(pd_chunks[i], pd_chunks[i + 1]);
+      });
     }
 
     template <int dim>
@@ -210,8 +190,7 @@ namespace pdfem
       // f_int = K_FE u + PD(u); every PD row is owned. The FE product and
       // the PD kernel run side by side.
       import_ghosts(u, u_ghosted);
-      run_alongside([&] { fe_matrix.vmult(x_masked, u); },
-                    [&] { compute_pd_forces(u_ghosted); });
+      compute_pd_forces(u_ghosted, [&] { fe_matrix.vmult(x_masked, u); });
       f_int = 0.;
       f_int += x_masked;
       add_pd_forces(f_int);
@@ -232,8 +211,7 @@ namespace pdfem
       for (unsigned int i = 0; i < held_lid.size(); ++i)
         xm[held_lid[i]] = 0.;
       import_ghosts(x_masked, x_ghosted);
-      run_alongside([&] { fe_matrix.vmult(y, x_masked); },
-                    [&] { compute_pd_forces(x_ghosted); });
+      compute_pd_forces(x_ghosted, [&] { fe_matrix.vmult(y, x_masked); });
       add_pd_forces(y);
       double *yv = y.trilinos_vector()[0];
       for (unsigned int i = 0; i < held_lid.size(); ++i)

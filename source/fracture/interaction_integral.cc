@@ -38,11 +38,6 @@ namespace pdfem
         return {a.v + b.v, a.d + b.d};
       }
       Dual
-      operator-(Dual a, Dual b)
-      {
-        return {a.v - b.v, a.d - b.d};
-      }
-      Dual
       operator*(Dual a, Dual b)
       {
         return {a.v * b.v, a.d * b.v + a.v * b.d};

@@ -30,6 +30,10 @@ namespace dealii
       class Triangulation;
     }
   } // namespace parallel
+  namespace TrilinosWrappers
+  {
+    class SparseMatrix;
+  }
   namespace hp
   {
     template <int dim, int spacedim>
@@ -273,6 +277,16 @@ namespace pdfem
       /// Global counts (the same on every rank).
       ProblemSize
       size() const;
+
+      /**
+       * The matrix the "amg fe" preconditioner is built from (doc/theory.md
+       * §5): the Q1/P1 stiffness of every cell, the cells a crack cuts
+       * weakened, the held DoFs with their diagonal. Brought up to date with
+       * the bonds first; empty with the other linear solvers. For
+       * diagnostics and tests.
+       */
+      const dealii::TrilinosWrappers::SparseMatrix &
+      preconditioner_matrix();
 
       /// The largest PD node damage (fraction of broken bonds), over all ranks.
       double

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The "amg fe" preconditioner's matrix follows broken bonds in place: cells
+// a crack cuts are weakened, and a node that loses every bond gets its held
+// diagonal. Updated in place after break_bonds(), it must equal the matrix
+// assembled from scratch for a body that had the same cracks from the start.
+#include <pdfem/coupling/coupled_system.h>
+
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <cmath>
+
+#include <Epetra_CrsMatrix.h>
+#include <gtest/gtest.h>
+
+namespace
+{
+  using namespace dealii;
+  using namespace pdfem;
+
+  /// A 1 x 1 plate of 8 x 8 PD cells, fixed at its left edge.
+  struct Plate
+  {
+    parallel::shared::Triangulation<2>          tria{MPI_COMM_WORLD};
+    std::unique_ptr<Coupling::CoupledSystem<2>> system;
+
+    explicit Plate(const std::vector<Mesh::Crack<2>> &initial_cracks)
+    {
+      GridGenerator::subdivided_hyper_cube(tria, 8, 0., 1., true);
+      Coupling::Settings<2> settings;
+      settings.material.youngs_modulus = 1e9;
+      settings.material.poissons_ratio = 0.25;
+      settings.material.plane_stress   = true;
+      settings.cracks                  = initial_cracks;
+      for (unsigned int c = 0; c < 2; ++c)
+        {
+          Coupling::BoundaryCondition<2> fixed;
+          fixed.name         = "left";
+          fixed.boundary_ids = {0};
+          fixed.component    = c;
+          fixed.expression   = "0";
+          settings.dirichlet.push_back(fixed);
+        }
+      settings.linear_solver.type           = "gmres";
+      settings.linear_solver.preconditioner = "amg fe";
+      system = std::make_unique<Coupling::CoupledSystem<2>>(
+        tria, std::vector<bool>(tria.n_active_cells(), true), settings);
+    }
+  };
+
+  /// Two cracks: one across the middle of the plate (cuts cells), one
+  /// across the corner (1, 1) that cuts every bond of the corner node.
+  std::vector<Mesh::Crack<2>>
+  test_cracks()
+  {
+    Mesh::Crack<2> middle, corner;
+    middle.points = {{Point<2>(0.3, 0.47), Point<2>(0.8, 0.47)}};
+    corner.points = {{Point<2>(0.9, 1.05), Point<2>(1.05, 0.9)}};
+    return {middle, corner};
+  }
+
+  /// max |A - B| over all entries of A and B, and max |A|.
+  std::pair<double, double>
+  difference(const TrilinosWrappers::SparseMatrix &A,
+             const TrilinosWrappers::SparseMatrix &B)
+  {
+    const Epetra_CrsMatrix &a = A.trilinos_matrix(), &b = B.trilinos_matrix();
+    double                  diff = 0., largest = 0.;
+    EXPECT_EQ(a.NumMyRows(), b.NumMyRows());
+    for (int row = 0; row < a.NumMyRows(); ++row)
+      {
+        const int             g = a.GRID(row);
+        std::map<int, double> entries;
+        for (const auto *m : {&a, &b})
+          {
+            int     n = 0;
+            double *v = nullptr;
+            int    *c = nullptr;
+            m->ExtractMyRowView(m->LRID(g), n, v, c);
+            for (int e = 0; e < n; ++e)
+              entries[m->GCID(c[e])] += (m == &a ? 1. : -1.) * v[e];
+            if (m == &a)
+              for (int e = 0; e < n; ++e)
+                largest = std::max(largest, std::abs(v[e]));
+          }
+        for (const auto &[col, d] : entries)
+          diff = std::max(diff, std::abs(d));
+      }
+    return {diff, largest};
+  }
+
+  TEST(PreconditionerMatrix, UpdatedInPlaceEqualsAssembledFromScratch)
+  {
+    Plate      cracked_later({});
+    Plate      cracked_from_start(test_cracks());
+    const auto before =
+      difference(cracked_later.system->preconditioner_matrix(),
+                 cracked_from_start.system->preconditioner_matrix());
+
+    EXPECT_GT(cracked_later.system->break_bonds(test_cracks()), 0u);
+    const auto later = cracked_later.system->size();
+    const auto start = cracked_from_start.system->size();
+    EXPECT_EQ(later.n_broken_bonds, start.n_broken_bonds);
+    EXPECT_EQ(later.n_decoupled_nodes, 1u); // the corner node
+    EXPECT_EQ(start.n_decoupled_nodes, 1u);
+
+    const auto after =
+      difference(cracked_later.system->preconditioner_matrix(),
+                 cracked_from_start.system->preconditioner_matrix());
+    // Before the cracks the matrices differ (cut cells, the held corner)...
+    EXPECT_GT(before.first, 0.1 * before.second);
+    // ... after them, only by round-off.
+    EXPECT_LT(after.first, 1e-12 * after.second);
+  }
+} // namespace
