@@ -153,9 +153,12 @@ namespace pdfem
       template <typename FEValuesType>
       void
       cell_stiffness(const FEValuesType &fv, std::vector<double> &K) const;
-      /// Diagonal entries of prescribed and decoupled DoFs in @p target.
-      void
-      add_held_diagonal(dealii::TrilinosWrappers::SparseMatrix &target) const;
+      /// Diagonal entries of prescribed and decoupled DoFs in @p target,
+      /// except those @p already_added marks (by owned-local index).
+      /// Returns the number added.
+      unsigned int
+      add_held_diagonal(dealii::TrilinosWrappers::SparseMatrix &target,
+                        const std::vector<bool> *already_added = nullptr) const;
       /// List the held DoFs (prescribed, or of decoupled nodes): their local
       /// index and diagonal entry. Call after the bond states change.
       void
