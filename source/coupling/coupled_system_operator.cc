@@ -4,8 +4,6 @@
 #include <pdfem/base/config.h>
 #include <pdfem/base/thread_team.h>
 
-#include <deal.II/base/multithread_info.h>
-
 #include <algorithm>
 #include <atomic>
 

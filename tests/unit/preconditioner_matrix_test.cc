@@ -10,6 +10,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <cmath>
+#include <map>
 
 #include <Epetra_CrsMatrix.h>
 #include <gtest/gtest.h>
