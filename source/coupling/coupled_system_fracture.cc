@@ -147,6 +147,13 @@ namespace pdfem
     }
 
     template <int dim>
+    const PD::Families &
+    CoupledSystem<dim>::families() const
+    {
+      return impl->families;
+    }
+
+    template <int dim>
     const TrilinosWrappers::SparseMatrix &
     CoupledSystem<dim>::preconditioner_matrix()
     {
@@ -217,7 +224,8 @@ namespace pdfem
     const std::function<bool(unsigned int, unsigned int)> &);                 \
   template const std::vector<double> &CoupledSystem<dim>::horizons() const;   \
   template std::vector<std::array<unsigned int, 2>>                           \
-                        CoupledSystem<dim>::intact_bonds() const;             \
+                               CoupledSystem<dim>::intact_bonds() const;      \
+  template const PD::Families &CoupledSystem<dim>::families() const;          \
   template unsigned int CoupledSystem<dim>::count_pieces(unsigned int) const; \
   template const TrilinosWrappers::SparseMatrix &                             \
   CoupledSystem<dim>::preconditioner_matrix();

@@ -191,6 +191,29 @@ namespace pdfem
       void
       update_decoupled();
 
+      /**
+       * The FE part of nodal_results(): per locally owned FE cell, the
+       * weights W[v][a][d] = sum_q X(v, q) d_d phi_a(x_q) that give the
+       * displacement gradient at vertex v, grad u[c][d] = sum_a u_a^c
+       * W[v][a][d], as the Q1/P1 interpolant X of the Gauss-point gradients.
+       * The cells and the mapping never change, so this is built once, on
+       * first use (make_vertex_gradients()); nodal_results() then needs no
+       * FEValues. Q1 and P1 have one scalar shape function per vertex.
+       */
+      struct VertexGradients
+      {
+        bool built = false;
+        /// Per cell, its vertex count n; nodes[start[j] .. + 2 n) holds the
+        /// node of each scalar shape function a, then the node of each
+        /// vertex v; weights[weight_start[j] ..) holds W[v][a][d].
+        std::vector<unsigned int> n, nodes;
+        std::vector<std::size_t>  start, weight_start;
+        std::vector<double>       weights;
+      };
+      VertexGradients vertex_gradients;
+      void
+      make_vertex_gradients();
+
       MPI_Comm                                                 comm;
       const dealii::parallel::shared::Triangulation<dim, dim> &tria;
       std::vector<bool>                                        cell_pd;

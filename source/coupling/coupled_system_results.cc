@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // CoupledSystem: nodal results (displacement, stress, damage), replicated.
 #include <pdfem/base/config.h>
+#include <pdfem/base/thread_team.h>
 
 #include <deal.II/base/mpi.h>
 
 #include <deal.II/fe/fe_tools.h>
-#include <deal.II/fe/fe_values_extractors.h>
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
+
+#include <array>
+#include <atomic>
 
 #include "coupled_system_impl.h"
 
@@ -51,92 +54,90 @@ namespace pdfem
         count[k] += 1.;
       };
 
-      // PD nodes: the nonlocal stress C : sym(sum_m mu_km (u_m - u_k) (x)
-      // a_m); damage = the fraction of broken bonds.
-      for (std::size_t o = 0; o < s.families.owners.size(); ++o)
-        {
-          const unsigned int k        = s.families.owners[o];
-          const std::size_t  first    = s.families.offsets[o];
-          const std::size_t  last     = s.families.offsets[o + 1];
-          std::size_t        n_intact = 0;
-          Tensor<2, dim>     grad_u;
-          for (std::size_t j = first; j < last; ++j)
-            {
-              if (!s.families.intact[j])
-                continue;
-              ++n_intact;
-              const unsigned int m = s.families.members[j];
-              for (unsigned int c = 0; c < dim; ++c)
-                {
-                  const double du = u_at(m, c) - u_at(k, c);
-                  for (unsigned int d = 0; d < dim; ++d)
-                    grad_u[c][d] += du * s.weight_a[j][d];
-                }
-            }
-          damage[k] =
-            last > first ? 1. - double(n_intact) / (last - first) : 0.;
-          if (!s.decoupled[o])
-            add_stress(k, s.pdlsm.stress(grad_u), grad_u);
-        }
+      // PD nodes: grad u = sum_m (u_m - u_k) (x) a_m over the intact bonds,
+      // the nonlocal stress C : sym(grad u); damage = the fraction of
+      // broken bonds. Each owner's gradient is kept apart and added below,
+      // so that the threads never write the same node.
+      const std::size_t           n_owners = s.families.owners.size();
+      std::vector<Tensor<2, dim>> owner_gradient(n_owners);
+      const auto                  pd_owners = [&](const std::size_t first_owner,
+                                 const std::size_t last_owner) {
+        for (std::size_t o = first_owner; o < last_owner; ++o)
+          {
+            const unsigned int k     = s.families.owners[o];
+            const std::size_t  first = s.families.offsets[o];
+            const std::size_t  last = s.families.offsets[o + 1];
+            std::size_t        n_intact = 0;
+            Tensor<2, dim>     grad_u;
+            for (std::size_t j = first; j < last; ++j)
+              {
+                if (!s.families.intact[j])
+                  continue;
+                ++n_intact;
+                const unsigned int m = s.families.members[j];
+                for (unsigned int c = 0; c < dim; ++c)
+                  {
+                    const double du = u_at(m, c) - u_at(k, c);
+                    for (unsigned int d = 0; d < dim; ++d)
+                      grad_u[c][d] += du * s.weight_a[j][d];
+                  }
+              }
+            damage[k] =
+              last > first ? 1. - double(n_intact) / (last - first) : 0.;
+            owner_gradient[o] = grad_u;
+          }
+      };
 
-      // FE cells: Gauss-point stresses extrapolated to the vertices (the
-      // Q1/P1 interpolant of the quadrature values), one contribution per
-      // adjacent FE cell.
-      std::vector<FullMatrix<double>> extrapolation(s.fe_scalar.size());
-      for (unsigned int i = 0; i < s.fe_scalar.size(); ++i)
-        {
-          extrapolation[i].reinit(s.fe_scalar[i].n_dofs_per_cell(),
-                                  s.quadrature[i].size());
-          FETools::compute_projection_from_quadrature_points_matrix(
-            s.fe_scalar[i], s.quadrature[i], s.quadrature[i], extrapolation[i]);
-        }
-      hp::FEValues<dim>                    fe_values(s.mapping,
-                                  s.fe,
-                                  s.quadrature,
-                                  update_gradients);
-      const FEValuesExtractors::Vector     displacement(0);
-      std::vector<types::global_dof_index> local_dofs;
-      std::vector<double>                  u_local;
-      std::vector<Tensor<2, dim>>          grads;
-      const double lambda = s.settings.material.lambda();
-      const double mu     = s.settings.material.mu();
-      for (const auto &cell : s.dofs.active_cell_iterators())
-        {
-          if (!cell->is_locally_owned() || s.cell_pd[cell->active_cell_index()])
-            continue;
-          fe_values.reinit(cell);
-          const FEValues<dim> &fv = fe_values.get_present_fe_values();
-          local_dofs.resize(fv.dofs_per_cell);
-          cell->get_dof_indices(local_dofs);
-          u_local.resize(fv.dofs_per_cell);
-          for (unsigned int i = 0; i < fv.dofs_per_cell; ++i)
-            u_local[i] = u_at(s.dof_to_node[local_dofs[i]],
-                              fv.get_fe().system_to_component_index(i).first);
-          grads.resize(fv.n_quadrature_points);
-          fv[displacement].get_function_gradients_from_local_dof_values(u_local,
-                                                                        grads);
-          std::vector<SymmetricTensor<2, dim>> sigma_q(fv.n_quadrature_points);
-          for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
-            {
-              const SymmetricTensor<2, dim> eps = symmetrize(grads[q]);
-              sigma_q[q] = lambda * trace(eps) * unit_symmetric_tensor<dim>() +
-                           2. * mu * eps;
-            }
-          const FullMatrix<double> &X = extrapolation[cell->active_fe_index()];
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              SymmetricTensor<2, dim> sigma;
-              Tensor<2, dim>          grad_u;
-              for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
-                {
-                  sigma += X(v, q) * sigma_q[q];
-                  grad_u += X(v, q) * grads[q];
-                }
-              add_stress(s.vertex_to_node[cell->vertex_index(v)],
-                         sigma,
-                         grad_u);
-            }
-        }
+      // FE cells: the Gauss-point gradients extrapolated to the vertices
+      // (make_vertex_gradients()), one contribution per adjacent FE cell.
+      // The stress is linear in the gradient, so C : sym(grad u) of the
+      // extrapolated gradient is the extrapolated Gauss-point stress.
+      if (!s.vertex_gradients.built)
+        s.make_vertex_gradients();
+      const double lambda   = s.settings.material.lambda();
+      const double mu       = s.settings.material.mu();
+      const auto   fe_cells = [&]() {
+        const auto &g = s.vertex_gradients;
+        std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> u_cell;
+        for (std::size_t j = 0; j < g.n.size(); ++j)
+          {
+            const unsigned int  n     = g.n[j];
+            const unsigned int *nodes = &g.nodes[g.start[j]];
+            const double       *w     = &g.weights[g.weight_start[j]];
+            for (unsigned int a = 0; a < n; ++a)
+              for (unsigned int c = 0; c < dim; ++c)
+                u_cell[a][c] = u_at(nodes[a], c);
+            for (unsigned int v = 0; v < n; ++v)
+              {
+                Tensor<2, dim> grad_u;
+                for (unsigned int a = 0; a < n; ++a, w += dim)
+                  for (unsigned int c = 0; c < dim; ++c)
+                    for (unsigned int d = 0; d < dim; ++d)
+                      grad_u[c][d] += u_cell[a][c] * w[d];
+                const SymmetricTensor<2, dim> eps = symmetrize(grad_u);
+                add_stress(nodes[n + v],
+                           lambda * trace(eps) * unit_symmetric_tensor<dim>() +
+                             2. * mu * eps,
+                           grad_u);
+              }
+          }
+      };
+
+      // The FE cells on the calling thread, the PD owners in the chunks of
+      // the matrix-free product (equal bond counts) on every thread.
+      std::atomic<std::size_t> next_chunk{0};
+      ThreadTeam::shared().run([&](const unsigned int member) {
+        if (member == 0)
+          fe_cells();
+        for (std::size_t i = next_chunk++; i + 1 < s.pd_chunks.size();
+             i             = next_chunk++)
+          pd_owners(s.pd_chunks[i], s.pd_chunks[i + 1]);
+      });
+      for (std::size_t o = 0; o < n_owners; ++o)
+        if (!s.decoupled[o])
+          add_stress(s.families.owners[o],
+                     s.pdlsm.stress(owner_gradient[o]),
+                     owner_gradient[o]);
 
       Utilities::MPI::sum(disp, s.comm, disp);
       Utilities::MPI::sum(stress, s.comm, stress);
@@ -168,6 +169,68 @@ namespace pdfem
           results.kind[k] = (s.is_pd[k] ? 1 : 0) + (s.is_fe[k] ? 2 : 0);
         }
       return results;
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::make_vertex_gradients()
+    {
+      // X: the Q1/P1 interpolant of the quadrature values at the vertices.
+      std::vector<FullMatrix<double>> extrapolation(fe_scalar.size());
+      for (unsigned int i = 0; i < fe_scalar.size(); ++i)
+        {
+          extrapolation[i].reinit(fe_scalar[i].n_dofs_per_cell(),
+                                  quadrature[i].size());
+          FETools::compute_projection_from_quadrature_points_matrix(
+            fe_scalar[i], quadrature[i], quadrature[i], extrapolation[i]);
+        }
+      hp::FEValues<dim> fe_values(mapping, fe, quadrature, update_gradients);
+      std::vector<types::global_dof_index> local_dofs;
+      VertexGradients                     &g = vertex_gradients;
+      g                                      = VertexGradients();
+      g.start.push_back(0);
+      g.weight_start.push_back(0);
+      for (const auto &cell : dofs.active_cell_iterators())
+        {
+          if (!cell->is_locally_owned() || cell_pd[cell->active_cell_index()])
+            continue;
+          fe_values.reinit(cell);
+          const FEValues<dim>      &fv      = fe_values.get_present_fe_values();
+          const FiniteElement<dim> &cell_fe = fv.get_fe();
+          const FullMatrix<double> &X = extrapolation[cell->active_fe_index()];
+          const unsigned int        n = cell->n_vertices();
+          AssertDimension(X.m(), n);
+          local_dofs.resize(fv.dofs_per_cell);
+          cell->get_dof_indices(local_dofs);
+          // The DoF of component 0 of each scalar shape function a.
+          std::vector<unsigned int> dof_of_shape(n);
+          g.nodes.resize(g.start.back() + 2 * n);
+          unsigned int *nodes = &g.nodes[g.start.back()];
+          for (unsigned int i = 0; i < fv.dofs_per_cell; ++i)
+            {
+              const auto [c, a] = cell_fe.system_to_component_index(i);
+              if (c == 0)
+                {
+                  dof_of_shape[a] = i;
+                  nodes[a]        = dof_to_node[local_dofs[i]];
+                }
+            }
+          for (unsigned int v = 0; v < n; ++v)
+            nodes[n + v] = vertex_to_node[cell->vertex_index(v)];
+          for (unsigned int v = 0; v < n; ++v)
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                Tensor<1, dim> w;
+                for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
+                  w += X(v, q) * fv.shape_grad_component(dof_of_shape[a], q, 0);
+                for (unsigned int d = 0; d < dim; ++d)
+                  g.weights.push_back(w[d]);
+              }
+          g.n.push_back(n);
+          g.start.push_back(g.nodes.size());
+          g.weight_start.push_back(g.weights.size());
+        }
+      g.built = true;
     }
 
 #define INSTANTIATE(dim)                                                       \

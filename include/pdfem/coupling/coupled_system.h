@@ -43,6 +43,11 @@ namespace dealii
 
 namespace pdfem
 {
+  namespace PD
+  {
+    struct Families;
+  }
+
   namespace Coupling
   {
     /**
@@ -315,6 +320,13 @@ namespace pdfem
       /// bond between two PD nodes appears once from each side).
       std::vector<std::array<unsigned int, 2>>
       intact_bonds() const;
+
+      /// This rank's families and their bond states, read-only (bonds break
+      /// only through break_bonds() and break_bonds_if()). Criteria that
+      /// visit every bond in every step read them here without the copy
+      /// intact_bonds() makes.
+      const PD::Families &
+      families() const;
 
       /// The horizon delta_k of every node (replicated; 0 for FE nodes).
       const std::vector<double> &
