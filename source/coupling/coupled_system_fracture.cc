@@ -134,19 +134,6 @@ namespace pdfem
     }
 
     template <int dim>
-    std::vector<std::array<unsigned int, 2>>
-    CoupledSystem<dim>::intact_bonds() const
-    {
-      const PD::Families                      &f = impl->families;
-      std::vector<std::array<unsigned int, 2>> bonds;
-      for (std::size_t o = 0; o < f.owners.size(); ++o)
-        for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
-          if (f.intact[b])
-            bonds.push_back({{f.owners[o], f.members[b]}});
-      return bonds;
-    }
-
-    template <int dim>
     const PD::Families &
     CoupledSystem<dim>::families() const
     {
@@ -223,9 +210,7 @@ namespace pdfem
   template unsigned long CoupledSystem<dim>::break_bonds_if(                  \
     const std::function<bool(unsigned int, unsigned int)> &);                 \
   template const std::vector<double> &CoupledSystem<dim>::horizons() const;   \
-  template std::vector<std::array<unsigned int, 2>>                           \
-                               CoupledSystem<dim>::intact_bonds() const;      \
-  template const PD::Families &CoupledSystem<dim>::families() const;          \
+  template const PD::Families        &CoupledSystem<dim>::families() const;   \
   template unsigned int CoupledSystem<dim>::count_pieces(unsigned int) const; \
   template const TrilinosWrappers::SparseMatrix &                             \
   CoupledSystem<dim>::preconditioner_matrix();

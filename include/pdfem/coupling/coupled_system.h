@@ -11,7 +11,6 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
-#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -316,15 +315,9 @@ namespace pdfem
       break_bonds_if(
         const std::function<bool(unsigned int, unsigned int)> &breaks);
 
-      /// The intact bonds (k, m) of this rank's families (node indices; a
-      /// bond between two PD nodes appears once from each side).
-      std::vector<std::array<unsigned int, 2>>
-      intact_bonds() const;
-
       /// This rank's families and their bond states, read-only (bonds break
-      /// only through break_bonds() and break_bonds_if()). Criteria that
-      /// visit every bond in every step read them here without the copy
-      /// intact_bonds() makes.
+      /// only through break_bonds() and break_bonds_if()); a bond between
+      /// two PD nodes appears once from each side.
       const PD::Families &
       families() const;
 
