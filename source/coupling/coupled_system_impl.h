@@ -105,6 +105,13 @@ namespace pdfem
       /// families are made.
       void
       make_pd_chunks();
+      /// Run @p caller_first on the calling thread, and @p owners on the
+      /// owner ranges of pd_chunks, shared by every thread of the team
+      /// (the caller joins once its own work is done).
+      void
+      for_each_pd_chunk(
+        const std::function<void()>                         &caller_first,
+        const std::function<void(std::size_t, std::size_t)> &owners) const;
       /// After bonds broke (or families were refitted): the broken bonds'
       /// blocks are zeroed, decoupled and held DoFs listed again; the
       /// block-Jacobi inverse and the auxiliary matrix are rebuilt by the

@@ -159,10 +159,19 @@ namespace pdfem
               f[c] = sum[c];
           }
       };
+      for_each_pd_chunk(fe_product, owners);
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::for_each_pd_chunk(
+      const std::function<void()>                         &caller_first,
+      const std::function<void(std::size_t, std::size_t)> &owners) const
+    {
       std::atomic<std::size_t> next_chunk{0};
       ThreadTeam::shared().run([&](const unsigned int member) {
-        if (member == 0)
-          fe_product();
+        if (member == 0 && caller_first)
+          caller_first();
         for (std::size_t i = next_chunk++; i + 1 < pd_chunks.size();
              i             = next_chunk++)
           owners(pd_chunks[i], pd_chunks[i + 1]);
@@ -278,6 +287,9 @@ namespace pdfem
 
 #define INSTANTIATE(dim)                                                    \
   template void CoupledSystem<dim>::Impl::make_pd_chunks();                 \
+  template void CoupledSystem<dim>::Impl::for_each_pd_chunk(                \
+    const std::function<void()> &,                                          \
+    const std::function<void(std::size_t, std::size_t)> &) const;           \
   template void CoupledSystem<dim>::Impl::import_ghosts(                    \
     const TrilinosWrappers::MPI::Vector &, TrilinosWrappers::MPI::Vector &) \
     const;                                                                  \

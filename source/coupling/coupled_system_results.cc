@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // CoupledSystem: nodal results (displacement, stress, damage), replicated.
 #include <pdfem/base/config.h>
-#include <pdfem/base/thread_team.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -10,7 +9,6 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <array>
-#include <atomic>
 
 #include "coupled_system_impl.h"
 
@@ -125,14 +123,7 @@ namespace pdfem
 
       // The FE cells on the calling thread, the PD owners in the chunks of
       // the matrix-free product (equal bond counts) on every thread.
-      std::atomic<std::size_t> next_chunk{0};
-      ThreadTeam::shared().run([&](const unsigned int member) {
-        if (member == 0)
-          fe_cells();
-        for (std::size_t i = next_chunk++; i + 1 < s.pd_chunks.size();
-             i             = next_chunk++)
-          pd_owners(s.pd_chunks[i], s.pd_chunks[i + 1]);
-      });
+      s.for_each_pd_chunk(fe_cells, pd_owners);
       for (std::size_t o = 0; o < n_owners; ++o)
         if (!s.decoupled[o])
           add_stress(s.families.owners[o],
