@@ -2,8 +2,11 @@
 // pdfem: run a scene file.  pdfem scene.prm [--output DIR] [--quiet]
 #include <pdfem/base/config.h>
 #include <pdfem/base/mpi_startup.h>
+#include <pdfem/drivers/interface.h>
+#include <pdfem/fracture/criterion.h>
 #include <pdfem/io/parameters.h>
 #include <pdfem/scene/scene.h>
+#include <pdfem/simulator/postprocess.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -16,29 +19,42 @@ namespace
   void
   print_help(std::ostream &out)
   {
-    out << "pdfem " << PDFEM_VERSION
-        << ": coupled peridynamics (PDLSM) and finite elements\n\n"
-           "Usage:\n"
-           "  pdfem SCENE.prm [--output DIR] [--quiet]\n"
-           "  mpirun -np N pdfem SCENE.prm ...\n"
-           "  pdfem --print-parameters\n"
-           "  pdfem --help | --version\n\n"
-           "Options:\n"
-           "  --output DIR         write results into DIR (default: the "
-           "scene's\n"
-           "                       Output/Directory, or output-<scene name>)\n"
-           "  --quiet              no progress output\n"
-           "  --set PATH=VALUE     override a parameter, e.g. --set "
-           "\"Mesh/Global refinements=2\"\n"
-           "                       (repeatable)\n"
-           "  --print-parameters   every scene parameter with its default and "
-           "documentation\n\n"
-           "Outputs: history.csv (one row per step), summary.json (sizes, "
-           "final values,\n"
-           "timings, exit_state), solution-NNNNN.pvtu and solution.pvd "
-           "(ParaView).\n"
-           "Exit status: 0 completed, 2 bad input, 3 the run stopped (see "
-           "summary.json).\n";
+    out
+      << "pdfem " << PDFEM_VERSION
+      << ": coupled peridynamics (PDLSM) and finite elements\n\n"
+         "Usage:\n"
+         "  pdfem SCENE.prm [--output DIR] [--quiet]\n"
+         "  mpirun -np N pdfem SCENE.prm ...\n"
+         "  pdfem --print-parameters | --list-plugins\n"
+         "  pdfem --help | --version\n\n"
+         "Options:\n"
+         "  --output DIR         write results into DIR (default: the "
+         "scene's\n"
+         "                       Output/Directory, or output-<scene name>)\n"
+         "  --quiet              no progress output\n"
+         "  --set PATH=VALUE     override a parameter, e.g. --set "
+         "\"Mesh/Global refinements=2\"\n"
+         "                       (repeatable)\n"
+         "  --print-parameters   every scene parameter with its default and "
+         "documentation\n"
+         "  --list-plugins       every registered driver, crack criterion and "
+         "postprocessor\n\n"
+         "Outputs: history.csv (one row per step), summary.json (sizes, "
+         "final values,\n"
+         "timings, exit_state), solution-NNNNN.pvtu and solution.pvd "
+         "(ParaView).\n"
+         "Exit status: 0 completed, 2 bad input, 3 the run stopped (see "
+         "summary.json).\n";
+  }
+  void
+  list_plugins(std::ostream &out)
+  {
+    out << "Drivers (Driver/Type):\n";
+    pdfem::Drivers::registry().list(out);
+    out << "\nCrack criteria (Fracture/Criterion; also 'none'):\n";
+    pdfem::Fracture::registry<2>().list(out);
+    out << "\nPostprocessors (each takes part where it applies):\n";
+    pdfem::Postprocess::registry<2>().list(out);
   }
 } // namespace
 
@@ -76,6 +92,12 @@ main(int argc, char **argv)
             pdfem::Parameters::print_all(std::cout);
           return 0;
         }
+      if (arg == "--list-plugins")
+        {
+          if (root)
+            list_plugins(std::cout);
+          return 0;
+        }
       if (arg == "--quiet" || arg == "-q")
         options.quiet = true;
       else if (arg == "--set")
@@ -108,7 +130,7 @@ main(int argc, char **argv)
             std::cerr << "pdfem: error: unknown option '" << arg
                       << "' (allowed: --output DIR, --quiet, --set PATH=VALUE, "
                          "--help, "
-                         "--version, --print-parameters)\n";
+                         "--version, --print-parameters, --list-plugins)\n";
           return 2;
         }
       else if (scene.empty())

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/json_writer.h>
 #include <pdfem/drivers/central_difference.h>
+#include <pdfem/drivers/interface.h>
 
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "dynamics_internal.h"
 
@@ -15,7 +18,7 @@ namespace pdfem
   {
     using namespace internal;
 
-    CentralDifference::CentralDifference(const Parameters::Driver &settings)
+    CentralDifference::CentralDifference(const Settings &settings)
       : settings(settings)
     {}
 
@@ -200,5 +203,150 @@ namespace pdfem
         }
       time_spent.steps = seconds_since(loop_start);
     }
+
+    namespace
+    {
+      /// The `explicit` driver plugin: CentralDifference.
+      class ExplicitRun : public Interface
+      {
+        using Integrator = CentralDifference;
+
+      public:
+        void
+        initialize(const Settings    &settings,
+                   const std::string &file,
+                   const int          dim) override
+        {
+          Interface::initialize(settings, file, dim);
+          parameters.check_time_stepping(file, dim, true);
+          if (parameters.mass == "consistent")
+            throw InputError(file,
+                             "Driver/Mass",
+                             "the explicit driver needs a lumped mass (a "
+                             "consistent mass would need a solve per step)",
+                             "lumped (or Type = newmark for a consistent "
+                             "mass)");
+        }
+
+        std::vector<std::string>
+        notes() const override
+        {
+          if (parameters.time_step == 0. && parameters.safety_factor > 1.)
+            return {"Driver/Time step safety factor = " +
+                    number(parameters.safety_factor) +
+                    " is above 1: the central difference is unstable"};
+          return {};
+        }
+
+        bool
+        dynamic() const override
+        {
+          return true;
+        }
+
+        bool
+        grows_cracks() const override
+        {
+          return true; // the criterion runs after every time step
+        }
+
+        void
+        check(const RunTraits &traits) const override
+        {
+          Interface::check(traits);
+          if (!traits.has_mass)
+            throw InputError(traits.file,
+                             "Material/Density",
+                             "rho = 0 for a dynamic run (Driver/Type = " +
+                               traits.driver_name + ")",
+                             "rho > 0 [kg/m^3]");
+        }
+
+        std::map<std::string, double>
+        timings() const override
+        {
+          const DynamicTimings &t =
+            integrator ? integrator->timings() : DynamicTimings();
+          const double n = std::max(1u, t.n_steps);
+          return {{"assembly",
+                   t.internal_force + t.external_force + t.factorize},
+                  {"solve", t.solve + t.update},
+                  {"time_loop", t.steps},
+                  {"seconds_per_step", t.steps / n},
+                  {"internal_force_per_step", t.internal_force / n},
+                  {"external_force_per_step", t.external_force / n},
+                  {"update_per_step", t.update / n},
+                  {"solve_per_step", t.solve / n},
+                  {"factorize", t.factorize},
+                  {"eigenvalue", t.eigenvalue}};
+        }
+
+        void
+        run(Host &host) override
+        {
+          integrator = std::make_unique<Integrator>(parameters);
+          SystemInterface::Vector v0;
+          host.initial_velocity(v0);
+          integrator->run(
+            host.dynamic_system(),
+            host.solution(),
+            v0,
+            [&host](const DynamicRecord &record) {
+              host.record_time_step(record);
+            },
+            [&host](const SystemInterface::Vector &u, const double t) {
+              return host.after_time_step(u, t);
+            });
+        }
+
+        std::string
+        first_step_note(const DynamicRecord &record) const override
+        {
+          const auto        &e = integrator->stability();
+          std::ostringstream s;
+          s << " = " << record.time_step / e.critical_time_step
+            << " x dt_crit; dt_crit = 2/omega_max = " << e.critical_time_step
+            << " s (power iteration, " << e.iterations
+            << " iterations, last change " << e.last_change << ")";
+          return s.str();
+        }
+
+        void
+        write_summary(IO::JsonWriter &json) const override
+        {
+          const auto  &e  = integrator->stability();
+          const double dt = integrator->time_step();
+          json.value("integrator", "central difference");
+          json.value("time_step", dt);
+          json.value("end_time", parameters.end_time);
+          json.value("critical_time_step", e.critical_time_step);
+          json.value("time_step_ratio",
+                     e.critical_time_step > 0. ? dt / e.critical_time_step :
+                                                 0.);
+          json.value("omega_max", e.omega_max);
+          json.value("eigenvalue_iterations",
+                     static_cast<unsigned long>(e.iterations));
+          json.value("eigenvalue_last_change", e.last_change);
+          const auto &i = integrator->instability();
+          if (i.unstable)
+            {
+              json.value("growth_per_step", i.growth_per_step);
+              json.value("estimated_critical_time_step",
+                         i.estimated_critical_step);
+              json.value("time_step_reduction", i.recommended_factor);
+              json.value("recommended_time_step", i.recommended_time_step);
+            }
+        }
+
+      private:
+        std::unique_ptr<Integrator> integrator;
+      };
+    } // namespace
+
+    PDFEM_REGISTER_DRIVER(
+      ExplicitRun,
+      "explicit",
+      "central difference with lumped mass in physical time t (specs/004 "
+      "§2.3), automatic stable time step.")
   } // namespace Drivers
 } // namespace pdfem

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/json_writer.h>
+#include <pdfem/drivers/interface.h>
 #include <pdfem/drivers/newmark.h>
 
 #include <deal.II/base/mpi.h>
@@ -14,7 +16,7 @@ namespace pdfem
   {
     using namespace internal;
 
-    Newmark::Newmark(const Parameters::Driver &settings)
+    Newmark::Newmark(const Settings &settings)
       : settings(settings)
     {}
 
@@ -229,5 +231,149 @@ namespace pdfem
         }
       time_spent.steps = seconds_since(loop_start);
     }
+
+    namespace
+    {
+      /// The `newmark` driver plugin: Newmark (HHT-alpha).
+      class NewmarkRun : public Interface
+      {
+        using Integrator = Newmark;
+
+      public:
+        void
+        initialize(const Settings    &settings,
+                   const std::string &file,
+                   const int          dim) override
+        {
+          Interface::initialize(settings, file, dim);
+          parameters.check_time_stepping(file, dim, false);
+          const std::string p     = "Driver/";
+          const double      gamma = parameters.newmark_gamma,
+                       beta       = parameters.newmark_beta;
+          if (parameters.time_step == 0.)
+            throw InputError(file,
+                             p + "Time step",
+                             "'auto' is for the explicit driver only "
+                             "(Newmark is unconditionally stable: the step "
+                             "is an accuracy choice)",
+                             "dt > 0 [s]");
+          if (parameters.hht_alpha != 0.)
+            return; // HHT sets beta and gamma
+          if (!(gamma >= 0.5))
+            throw InputError(file,
+                             p + "Newmark gamma",
+                             "gamma = " + number(gamma) +
+                               " is outside the stable range (gamma < 1/2 "
+                               "amplifies every mode)",
+                             "gamma >= 0.5 with beta >= (2 gamma + 1)^2 / 16");
+          const double beta_min = (2. * gamma + 1.) * (2. * gamma + 1.) / 16.;
+          if (!(beta >= beta_min - 1e-14) || !(beta <= 1.))
+            throw InputError(file,
+                             p + "Newmark beta",
+                             "beta = " + number(beta) +
+                               " is outside the unconditionally stable range "
+                               "for gamma = " +
+                               number(gamma),
+                             number(beta_min) +
+                               " = (2 gamma + 1)^2 / 16 <= beta <= 1");
+        }
+
+        void
+        check(const RunTraits &traits) const override
+        {
+          check_dynamic(traits);
+          if (!traits.assembled_matrix)
+            throw InputError(traits.file,
+                             "Linear solver/Preconditioner",
+                             "'amg fe' has no assembled matrix, which Newmark "
+                             "factorises once and reuses",
+                             "amg or ilu (or Type = direct)");
+        }
+
+        bool
+        dynamic() const override
+        {
+          return true;
+        }
+
+        bool
+        grows_cracks() const override
+        {
+          return true; // the criterion runs after every time step
+        }
+
+        void
+        check_dynamic(const RunTraits &traits) const
+        {
+          Interface::check(traits);
+          if (!traits.has_mass)
+            throw InputError(traits.file,
+                             "Material/Density",
+                             "rho = 0 for a dynamic run (Driver/Type = " +
+                               traits.driver_name + ")",
+                             "rho > 0 [kg/m^3]");
+        }
+
+        std::map<std::string, double>
+        timings() const override
+        {
+          const DynamicTimings &t =
+            integrator ? integrator->timings() : DynamicTimings();
+          const double n = std::max(1u, t.n_steps);
+          return {{"assembly",
+                   t.internal_force + t.external_force + t.factorize},
+                  {"solve", t.solve + t.update},
+                  {"time_loop", t.steps},
+                  {"seconds_per_step", t.steps / n},
+                  {"internal_force_per_step", t.internal_force / n},
+                  {"external_force_per_step", t.external_force / n},
+                  {"update_per_step", t.update / n},
+                  {"solve_per_step", t.solve / n},
+                  {"factorize", t.factorize},
+                  {"eigenvalue", t.eigenvalue}};
+        }
+
+        void
+        run(Host &host) override
+        {
+          integrator = std::make_unique<Integrator>(parameters);
+          SystemInterface::Vector v0;
+          host.initial_velocity(v0);
+          integrator->run(
+            host.dynamic_system(),
+            host.solution(),
+            v0,
+            [&host](const DynamicRecord &record) {
+              host.record_time_step(record);
+            },
+            [&host](const SystemInterface::Vector &u, const double t) {
+              return host.after_time_step(u, t);
+            });
+        }
+
+        void
+        write_summary(IO::JsonWriter &json) const override
+        {
+          json.value("integrator", "newmark");
+          json.value("time_step", parameters.time_step);
+          json.value("end_time", parameters.end_time);
+          json.value("newmark_beta", parameters.newmark_beta);
+          json.value("newmark_gamma", parameters.newmark_gamma);
+          json.value("factorizations",
+                     static_cast<unsigned long>(
+                       integrator ? integrator->n_factorizations() : 0));
+        }
+
+      private:
+        std::unique_ptr<Integrator> integrator;
+      };
+    } // namespace
+
+    PDFEM_REGISTER_DRIVER(
+      NewmarkRun,
+      "newmark",
+      "implicit Newmark (beta, gamma; HHT-alpha) in physical time t (specs/004 "
+      "§2.4), the factorisation of M + beta dt^2 K reused while no bond "
+      "breaks.")
   } // namespace Drivers
 } // namespace pdfem

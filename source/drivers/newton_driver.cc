@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/exceptions.h>
+#include <pdfem/drivers/interface.h>
 #include <pdfem/drivers/newton_driver.h>
 
 #include <deal.II/lac/trilinos_vector.h>
@@ -40,7 +41,7 @@ namespace pdfem
       }
     } // namespace
 
-    NewtonDriver::NewtonDriver(const Parameters::Driver &settings)
+    NewtonDriver::NewtonDriver(const Settings &settings)
       : settings(settings)
     {}
 
@@ -497,5 +498,126 @@ namespace pdfem
           ++step;
         }
     }
+
+    namespace
+    {
+      /// What the newton and arc length plugins share.
+      class NonlinearRun : public Interface
+      {
+      public:
+        void
+        initialize(const Settings    &settings,
+                   const std::string &file,
+                   const int          dim) override
+        {
+          Interface::initialize(settings, file, dim);
+          input_file = file;
+        }
+
+        bool
+        handles_nonlinear_models() const override
+        {
+          return true;
+        }
+
+        void
+        check(const RunTraits &traits) const override
+        {
+          if (!traits.nonlinear_model)
+            throw InputError(traits.file,
+                             "Driver/Type",
+                             "the " + traits.driver_name +
+                               " driver is for nonlinear models; the " +
+                               traits.model_name + " model is linear",
+                             "static or quasi-static, or a nonlinear model "
+                             "(Peridynamics/Model = rnp)");
+        }
+
+        std::map<std::string, double>
+        timings() const override
+        {
+          return driver ?
+                   std::map<std::string, double>{
+                     {"assembly", driver->timings().assembly},
+                     {"solve", driver->timings().solve}} :
+                   std::map<std::string, double>{};
+        }
+
+        const NewtonOutcome *
+        outcome() const override
+        {
+          return driver ? &driver->outcome() : nullptr;
+        }
+
+      protected:
+        std::unique_ptr<NewtonDriver> driver;
+        std::string                   input_file;
+      };
+
+      /// The `newton` driver plugin: load stepping with line search, step
+      /// cuts and the stability check; the snap-back continuation under
+      /// hard loading where the host offers it.
+      class NewtonRun : public NonlinearRun
+      {
+      public:
+        void
+        run(Host &host) override
+        {
+          driver = std::make_unique<NewtonDriver>(parameters);
+          driver->run(
+            host.system(),
+            host.solution(),
+            [&host](const StepRecord &record) {
+              host.after_equilibrium(record, false);
+            },
+            host.stability(),
+            host.load_derivative(false));
+        }
+      };
+
+      /// The `arc length` driver plugin: Crisfield's continuation.
+      class ArcLengthRun : public NonlinearRun
+      {
+      public:
+        void
+        run(Host &host) override
+        {
+          const NewtonDriver::LoadDerivative dr_dt = host.load_derivative(true);
+          if (!dr_dt)
+            throw InputError(input_file,
+                             "Driver/Type",
+                             "arc length needs loads linear in t (tractions "
+                             "and body force t q, prescribed values u_p(0) + "
+                             "t w)",
+                             "such loads, or the newton driver");
+          driver = std::make_unique<NewtonDriver>(parameters);
+          driver->run_arc_length(
+            host.system(),
+            host.solution(),
+            dr_dt,
+            parameters.arc_length_steps,
+            [&host](const StepRecord &record) {
+              host.after_equilibrium(record, false);
+            },
+            host.stability(),
+            [&host](const StabilityReport &report) {
+              host.after_stability_check(report);
+            });
+        }
+      };
+    } // namespace
+
+    PDFEM_REGISTER_DRIVER(
+      NewtonRun,
+      "newton",
+      "static stepping with a line search, load step cutting and a stability "
+      "check of every converged step (nonlinear models: rnp); a step that "
+      "cannot be completed stops the run with exit state 'unstable'.")
+    PDFEM_REGISTER_DRIVER(
+      ArcLengthRun,
+      "arc length",
+      "the load factor becomes an unknown (Crisfield's arc-length "
+      "continuation), so the path is followed through limit points and "
+      "snap-backs; loads linear in t only (rnp).")
   } // namespace Drivers
 } // namespace pdfem

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/exceptions.h>
+#include <pdfem/drivers/interface.h>
 #include <pdfem/drivers/quasi_static_driver.h>
 
 #include <deal.II/lac/trilinos_vector.h>
@@ -11,7 +12,7 @@ namespace pdfem
 {
   namespace Drivers
   {
-    QuasiStaticDriver::QuasiStaticDriver(const Parameters::Driver &settings)
+    QuasiStaticDriver::QuasiStaticDriver(const Settings &settings)
       : settings(settings)
     {}
 
@@ -50,5 +51,52 @@ namespace pdfem
           t += dt;
         }
     }
+
+    namespace
+    {
+      /// The `quasi-static` driver plugin: QuasiStaticDriver; the host's
+      /// criterion grows cracks after each equilibrium.
+      class QuasiStaticRun : public Interface
+      {
+      public:
+        void
+        run(Host &host) override
+        {
+          driver = std::make_unique<QuasiStaticDriver>(parameters);
+          driver->run([&host]() -> SystemInterface & { return host.system(); },
+                      host.solution(),
+                      [&host](const StepRecord &record) {
+                        return host.after_equilibrium(record, true);
+                      });
+        }
+
+        bool
+        grows_cracks() const override
+        {
+          return true;
+        }
+
+        std::map<std::string, double>
+        timings() const override
+        {
+          return driver ?
+                   std::map<std::string, double>{
+                     {"assembly", driver->timings().assembly},
+                     {"solve", driver->timings().solve}} :
+                   std::map<std::string, double>{};
+        }
+
+      private:
+        std::unique_ptr<QuasiStaticDriver> driver;
+      };
+    } // namespace
+
+    PDFEM_REGISTER_DRIVER(
+      QuasiStaticRun,
+      "quasi-static",
+      "crack growth under a slowly increasing load: after each equilibrium "
+      "the Fracture criterion is checked; where cracks grew the load is held "
+      "and equilibrium found again, otherwise t grows by 'Load increment' "
+      "('Load steps' steps in all).")
   } // namespace Drivers
 } // namespace pdfem

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/exceptions.h>
+#include <pdfem/drivers/interface.h>
 #include <pdfem/drivers/static_driver.h>
 
 #include <deal.II/lac/trilinos_vector.h>
@@ -24,13 +25,13 @@ namespace pdfem
     } // namespace
 
     StepRecord
-    equilibrate(SystemInterface          &system,
-                SystemInterface::Vector  &u,
-                const double              t,
-                const double              t_of_u,
-                const unsigned int        step,
-                const Parameters::Driver &settings,
-                DriverTimings            &time_spent)
+    equilibrate(SystemInterface         &system,
+                SystemInterface::Vector &u,
+                const double             t,
+                const double             t_of_u,
+                const unsigned int       step,
+                const Settings          &settings,
+                DriverTimings           &time_spent)
     {
       using clock = std::chrono::steady_clock;
       SystemInterface::Vector r, du;
@@ -83,7 +84,7 @@ namespace pdfem
       return record;
     }
 
-    StaticDriver::StaticDriver(const Parameters::Driver &settings)
+    StaticDriver::StaticDriver(const Settings &settings)
       : settings(settings)
     {}
 
@@ -102,5 +103,49 @@ namespace pdfem
                             settings,
                             time_spent));
     }
+
+    namespace
+    {
+      /// The `static` driver plugin: StaticDriver over the host's system;
+      /// a criterion is evaluated after each step but grows nothing.
+      class StaticRun : public Interface
+      {
+      public:
+        void
+        run(Host &host) override
+        {
+          driver = std::make_unique<StaticDriver>(parameters);
+          driver->run(host.system(),
+                      host.solution(),
+                      [&host](const StepRecord &record) {
+                        host.after_equilibrium(record, false);
+                      });
+        }
+
+        bool
+        handles_nonlinear_models() const override
+        {
+          return true; // Newton iterations without cuts or checks
+        }
+
+        std::map<std::string, double>
+        timings() const override
+        {
+          return driver ?
+                   std::map<std::string, double>{
+                     {"assembly", driver->timings().assembly},
+                     {"solve", driver->timings().solve}} :
+                   std::map<std::string, double>{};
+        }
+
+      private:
+        std::unique_ptr<StaticDriver> driver;
+      };
+    } // namespace
+
+    PDFEM_REGISTER_DRIVER(StaticRun,
+                          "static",
+                          "equilibrium under the full load, reached in 'Load "
+                          "steps' equal increments of the load factor t.")
   } // namespace Drivers
 } // namespace pdfem

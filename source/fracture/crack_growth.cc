@@ -122,7 +122,7 @@ namespace pdfem
     template <int dim>
     struct CrackGrowth<dim>::Impl
     {
-      Parameters::Fracture                      settings;
+      Settings                                  settings;
       FE::ElasticMaterial                       material;
       std::unique_ptr<InteractionIntegral<dim>> integral;
       std::vector<std::vector<Point<dim>>>      paths;
@@ -138,28 +138,16 @@ namespace pdfem
                  settings.growth_length_absolute :
                  settings.growth_length * integral->element_size(p);
       }
-
-      Assessment
-      mcts(Coupling::CoupledSystem<dim>      &system,
-           const Coupling::NodalResults<dim> &results,
-           bool                               allow_growth);
-      Assessment
-      principal_stress(Coupling::CoupledSystem<dim>      &system,
-                       const Coupling::NodalResults<dim> &results,
-                       bool                               allow_growth);
-      Assessment
-      critical_stretch(Coupling::CoupledSystem<dim>      &system,
-                       const Coupling::NodalResults<dim> &results,
-                       bool                               allow_growth);
     };
 
     template <int dim>
     CrackGrowth<dim>::CrackGrowth(
-      const Parameters::Fracture          &settings,
+      const Settings                      &settings,
       const FE::ElasticMaterial           &material,
       const std::vector<Mesh::Crack<dim>> &initial_cracks,
       const Coupling::CoupledSystem<dim>  &system,
-      const std::vector<bool>             &tip_at_end)
+      const std::vector<bool>             &tip_at_end,
+      const bool                           fronts_3d)
       : impl(std::make_unique<Impl>())
     {
       Impl &s    = *impl;
@@ -203,7 +191,7 @@ namespace pdfem
                 s.tips.push_back(tip);
               }
           }
-      else if (settings.criterion == "mcts")
+      else if (fronts_3d)
         {
           // Front points, both ends included (one: the middle).
           s.fronts = s.integral->straight_fronts(initial_cracks);
@@ -239,35 +227,36 @@ namespace pdfem
     }
 
     template <int dim>
-    Assessment
-    CrackGrowth<dim>::evaluate(Coupling::CoupledSystem<dim>      &system,
-                               const Coupling::NodalResults<dim> &results,
-                               const bool                         allow_growth)
+    void
+    CrackGrowth<dim>::count_pieces(Assessment                         &a,
+                                   const Coupling::CoupledSystem<dim> &system,
+                                   const Coupling::NodalResults<dim>  &results)
     {
-      Assessment a;
-      if (impl->settings.criterion == "mcts")
-        a = impl->mcts(system, results, allow_growth);
-      else if (impl->settings.criterion == "max principal stress")
-        a = impl->principal_stress(system, results, allow_growth);
-      else if (impl->settings.criterion == "critical stretch")
-        a = impl->critical_stretch(system, results, allow_growth);
-      else
-        a.critical_load_ratio = std::numeric_limits<double>::infinity();
       if (a.broken_bonds > 0)
         {
           // Pieces smaller than 1 % of the nodes are fragments, not a cut.
           const unsigned int n = results.position.size();
           a.pieces             = system.count_pieces(std::max(3u, n / 100));
         }
-      return a;
     }
 
     template <int dim>
     Assessment
-    CrackGrowth<dim>::Impl::mcts(Coupling::CoupledSystem<dim>      &system,
-                                 const Coupling::NodalResults<dim> &results,
-                                 const bool allow_growth)
+    CrackGrowth<dim>::grow_at_tips(Coupling::CoupledSystem<dim>      &system,
+                                   const Coupling::NodalResults<dim> &results,
+                                   const bool allow_growth)
     {
+      [[maybe_unused]] auto       &tips           = impl->tips;
+      [[maybe_unused]] auto       &integral       = impl->integral;
+      [[maybe_unused]] const auto &settings       = impl->settings;
+      [[maybe_unused]] auto       &segments       = impl->segments;
+      [[maybe_unused]] auto       &paths          = impl->paths;
+      [[maybe_unused]] auto       &virtual_cracks = impl->virtual_cracks;
+      [[maybe_unused]] auto       &fronts         = impl->fronts;
+      [[maybe_unused]] const auto &material       = impl->material;
+      [[maybe_unused]] const auto  length_at = [this](const Point<dim> &p) {
+        return impl->length_at(p);
+      };
       Assessment a;
       a.critical_load_ratio = std::numeric_limits<double>::infinity();
       std::vector<Mesh::Crack<dim>> grown;
@@ -334,11 +323,22 @@ namespace pdfem
 
     template <int dim>
     Assessment
-    CrackGrowth<dim>::Impl::principal_stress(
+    CrackGrowth<dim>::grow_by_principal_stress(
       Coupling::CoupledSystem<dim>      &system,
       const Coupling::NodalResults<dim> &results,
       const bool                         allow_growth)
     {
+      [[maybe_unused]] auto       &tips           = impl->tips;
+      [[maybe_unused]] auto       &integral       = impl->integral;
+      [[maybe_unused]] const auto &settings       = impl->settings;
+      [[maybe_unused]] auto       &segments       = impl->segments;
+      [[maybe_unused]] auto       &paths          = impl->paths;
+      [[maybe_unused]] auto       &virtual_cracks = impl->virtual_cracks;
+      [[maybe_unused]] auto       &fronts         = impl->fronts;
+      [[maybe_unused]] const auto &material       = impl->material;
+      [[maybe_unused]] const auto  length_at = [this](const Point<dim> &p) {
+        return impl->length_at(p);
+      };
       Assessment   a;
       const double strength = settings.tensile_strength;
       // Candidates (stress, k, m) with k < m, this rank's first.
@@ -447,11 +447,22 @@ namespace pdfem
 
     template <int dim>
     Assessment
-    CrackGrowth<dim>::Impl::critical_stretch(
+    CrackGrowth<dim>::break_by_stretch(
       Coupling::CoupledSystem<dim>      &system,
       const Coupling::NodalResults<dim> &results,
       const bool                         allow_growth)
     {
+      [[maybe_unused]] auto       &tips           = impl->tips;
+      [[maybe_unused]] auto       &integral       = impl->integral;
+      [[maybe_unused]] const auto &settings       = impl->settings;
+      [[maybe_unused]] auto       &segments       = impl->segments;
+      [[maybe_unused]] auto       &paths          = impl->paths;
+      [[maybe_unused]] auto       &virtual_cracks = impl->virtual_cracks;
+      [[maybe_unused]] auto       &fronts         = impl->fronts;
+      [[maybe_unused]] const auto &material       = impl->material;
+      [[maybe_unused]] const auto  length_at = [this](const Point<dim> &p) {
+        return impl->length_at(p);
+      };
       // s_c given, or from G_c by the bond-based energy release through a
       // crack plane (Silling & Askari 2005 in 3D; Ha & Bobaru 2010 in plane
       // stress): an approximation for PDLSM, whose bonds carry no energy

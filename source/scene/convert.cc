@@ -3,6 +3,7 @@
 // (.prm + gmsh .msh), written from the very set-up `pdfem model.in` runs.
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
+#include <pdfem/drivers/interface.h>
 #include <pdfem/io/parameters.h>
 #include <pdfem/io/pdlsm_fem_input.h>
 #include <pdfem/scene/convert.h>
@@ -262,7 +263,7 @@ namespace pdfem
           set("Hold load while cracks grow", flag(d.hold_load_while_growing));
           set("Residual tolerance", exact(d.residual_tolerance));
           set("Max iterations", std::to_string(d.max_iterations));
-          if (d.dynamic())
+          if (Drivers::create(d.type, model.command_file)->dynamic())
             {
               set("Time step",
                   d.time_step > 0. ? exact(d.time_step) : std::string("auto"));
@@ -360,7 +361,7 @@ namespace pdfem
                      s.linear_solver.max_iterations &&
                    prm.linear_solver.restart == s.linear_solver.restart,
                  "Linear solver");
-          const auto &p = prm.driver;
+          auto p = prm.driver; // the time stepping is parsed by its driver
           expect(p.type == d.type && p.load_steps == d.load_steps &&
                    p.load_increment == d.load_increment &&
                    p.initial_load == d.initial_load &&
@@ -369,7 +370,11 @@ namespace pdfem
                    p.residual_tolerance == d.residual_tolerance &&
                    p.max_iterations == d.max_iterations,
                  "Driver");
-          if (d.dynamic())
+          const bool dynamic =
+            Drivers::create(d.type, model.command_file)->dynamic();
+          if (dynamic)
+            p.check_time_stepping(prm_file, dim, true);
+          if (dynamic)
             expect(p.time_step == d.time_step && p.end_time == d.end_time &&
                      p.safety_factor == d.safety_factor &&
                      p.newmark_beta == d.newmark_beta &&

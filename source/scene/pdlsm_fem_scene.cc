@@ -444,7 +444,7 @@ namespace pdfem
             settings.linear_solver.tolerance = 1e-10;
             setup.driver.residual_tolerance  = 1e-9;
           }
-        if (setup.driver.type == "newmark")
+        if (model.solver == Solver::dynamic && model.newmark)
           {
             // K_N is factorised once and reused: a direct solver (on
             // plateCrack a MUMPS solve takes 14 ms, KLU's 12 ms with a 5x

@@ -2,7 +2,6 @@
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
 #include <pdfem/coupling/coupled_system.h>
-#include <pdfem/drivers/static_driver.h>
 #include <pdfem/io/field_output.h>
 #include <pdfem/io/history.h>
 #include <pdfem/io/json_writer.h>
@@ -11,6 +10,7 @@
 #include <pdfem/mesh/cracks.h>
 #include <pdfem/mesh/gmsh_input.h>
 #include <pdfem/scene/scene.h>
+#include <pdfem/simulator/simulator.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -411,6 +411,98 @@ namespace pdfem
 #undef INSTANTIATE
     } // namespace internal
 
+    namespace
+    {
+      /// The driver and criterion of @p prm, checked against each other and
+      /// the scene before any work (InputError).
+      template <int dim>
+      std::pair<std::unique_ptr<Drivers::Interface>,
+                std::unique_ptr<Fracture::Criterion<dim>>>
+      make_plugins(const std::string        &file,
+                   const Drivers::Settings  &driver_settings,
+                   const Fracture::Settings &fracture,
+                   const std::string        &model_name,
+                   const bool                nonlinear_model,
+                   const double              density,
+                   const Solvers::Settings  &linear_solver)
+      {
+        auto driver = Drivers::create(driver_settings.type, file);
+        driver->initialize(driver_settings, file, dim);
+        auto criterion =
+          Fracture::create_criterion<dim>(fracture.criterion, file);
+        if (criterion)
+          criterion->initialize(fracture, file);
+        check_plugins<dim>(*driver,
+                           criterion.get(),
+                           make_run_traits(file,
+                                           dim,
+                                           model_name,
+                                           nonlinear_model,
+                                           density,
+                                           linear_solver,
+                                           driver_settings.type),
+                           fracture);
+        return {std::move(driver), std::move(criterion)};
+      }
+
+      /// A PDLSM-FEM command file (and the .lis mesh it names).
+      template <int dim>
+      int
+      run_pdlsm_fem(const IO::PDLSMFEMModel &model,
+                    const RunOptions        &options,
+                    MPI_Comm                 comm,
+                    const clock::time_point  start)
+      {
+        Setup<dim> setup;
+        setup.total_start = start;
+        internal::setup_from_pdlsm_fem<dim>(model, options, comm, setup);
+        auto           plugins = make_plugins<dim>(setup.file,
+                                         setup.driver,
+                                         setup.fracture,
+                                         "pdlsm",
+                                         false,
+                                         setup.settings.material.density,
+                                         setup.settings.linear_solver);
+        Simulator<dim> simulator(std::move(setup),
+                                 comm,
+                                 std::move(plugins.first),
+                                 std::move(plugins.second));
+        simulator.set_quiet(options.quiet);
+        return simulator.run();
+      }
+
+      /// A .prm scene.
+      template <int dim>
+      int
+      run_prm(const Parameters::Scene &prm,
+              const RunOptions        &options,
+              MPI_Comm                 comm,
+              const clock::time_point  start)
+      {
+        // Peridynamics/Model: pdlsm is the coupled system's own model; rnp
+        // runs its own system (rnp_scene.cc).
+        const bool rnp     = prm.peridynamics.model == "rnp";
+        auto       plugins = make_plugins<dim>(prm.file,
+                                         prm.driver,
+                                         prm.fracture,
+                                         prm.peridynamics.model,
+                                         rnp,
+                                         prm.material.density,
+                                         prm.linear_solver);
+        Setup<dim> setup;
+        setup.total_start = start;
+        setup_from_prm<dim>(prm, options, comm, setup);
+        if (rnp)
+          return internal::execute_rnp<dim>(setup, prm, options, comm);
+        Simulator<dim> simulator(std::move(setup),
+                                 comm,
+                                 std::move(plugins.first),
+                                 std::move(plugins.second));
+        simulator.set_quiet(options.quiet);
+        return simulator.run();
+      }
+    } // namespace
+
     int
     run(const std::string &file, const RunOptions &options, MPI_Comm comm)
     {
@@ -420,43 +512,19 @@ namespace pdfem
           const auto start = clock::now();
           if (fs::path(file).extension() == ".in")
             {
-              // A PDLSM-FEM command file and the .lis mesh it names.
               const IO::PDLSMFEMModel model = IO::read_pdlsm_fem(file);
               if (model.dim == 2)
-                {
-                  Setup<2> setup;
-                  setup.total_start = start;
-                  internal::setup_from_pdlsm_fem<2>(model,
-                                                    options,
-                                                    comm,
-                                                    setup);
-                  return internal::execute<2>(setup, options, comm);
-                }
+                return run_pdlsm_fem<2>(model, options, comm, start);
 #if PDFEM_WITH_3D
-              Setup<3> setup;
-              setup.total_start = start;
-              internal::setup_from_pdlsm_fem<3>(model, options, comm, setup);
-              return internal::execute<3>(setup, options, comm);
+              return run_pdlsm_fem<3>(model, options, comm, start);
 #endif
             }
           Parameters::Scene prm;
           prm.read(file, options.overrides);
           if (prm.dim == 2)
-            {
-              Setup<2> setup;
-              setup.total_start = start;
-              setup_from_prm<2>(prm, options, comm, setup);
-              if (prm.peridynamics.model == "rnp")
-                return internal::execute_rnp<2>(setup, prm, options, comm);
-              return internal::execute<2>(setup, options, comm);
-            }
+            return run_prm<2>(prm, options, comm, start);
 #if PDFEM_WITH_3D
-          Setup<3> setup;
-          setup.total_start = start;
-          setup_from_prm<3>(prm, options, comm, setup);
-          if (prm.peridynamics.model == "rnp")
-            return internal::execute_rnp<3>(setup, prm, options, comm);
-          return internal::execute<3>(setup, options, comm);
+          return run_prm<3>(prm, options, comm, start);
 #else
           throw InputError(file,
                            "Dimension",

@@ -68,7 +68,7 @@ namespace pdfem
       }
     } // namespace
 
-    LinearSolver::LinearSolver(const Parameters::LinearSolver &settings)
+    LinearSolver::LinearSolver(const Solvers::Settings &settings)
       : settings(settings)
     {}
 

@@ -139,10 +139,10 @@ namespace
     std::vector<unsigned int> held;
   };
 
-  pdfem::Parameters::Driver
+  pdfem::Drivers::Settings
   driver(const std::string &type, const double end_time)
   {
-    pdfem::Parameters::Driver d;
+    pdfem::Drivers::Settings d;
     d.type     = type;
     d.end_time = end_time;
     return d;

@@ -185,14 +185,14 @@ namespace
     // exceed the strength count).
     for (const double fraction : {2., 0.5})
       {
-        Parameters::Fracture fracture;
+        Fracture::Settings fracture;
         fracture.criterion        = "max principal stress";
         fracture.tensile_strength = fraction * largest;
         Fracture::CrackGrowth<2> growth(fracture,
                                         settings.material,
                                         {crack},
                                         system);
-        const auto               a = growth.evaluate(system, r, false);
+        const auto a = growth.grow_by_principal_stress(system, r, false);
         EXPECT_EQ(a.max_driving_value, largest) << "strength " << fraction;
         EXPECT_EQ(a.critical_load_ratio, fraction);
       }

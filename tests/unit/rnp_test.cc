@@ -466,9 +466,9 @@ namespace
   BarResult
   solve_bar(const double h, const double C)
   {
-    Bar                bar(h, C, 40.);
-    RNPSystem<1>       system(bar.x, bar.V, bar.s, {}, bar.loads);
-    Parameters::Driver settings;
+    Bar               bar(h, C, 40.);
+    RNPSystem<1>      system(bar.x, bar.V, bar.s, {}, bar.loads);
+    Drivers::Settings settings;
     settings.type               = "newton";
     settings.load_steps         = 1;
     settings.residual_tolerance = 1e-13;
@@ -509,9 +509,9 @@ namespace
     // specs/001 A7: the last stable load of the h = 0.5 bar is 598.9. Load
     // to 1000 in 10 steps, cuts by 1/4: the run must stop 'unstable' with
     // the limit load between the last stable and the failed load.
-    Bar                bar(0.5, 4000., 1000.);
-    RNPSystem<1>       system(bar.x, bar.V, bar.s, {}, bar.loads);
-    Parameters::Driver settings;
+    Bar               bar(0.5, 4000., 1000.);
+    RNPSystem<1>      system(bar.x, bar.V, bar.s, {}, bar.loads);
+    Drivers::Settings settings;
     settings.type               = "newton";
     settings.load_steps         = 10;
     settings.residual_tolerance = 1e-10;
@@ -557,8 +557,8 @@ namespace
       u[0]     = 0.;
       u[n - 1] = 4. * t;
     };
-    RNPSystem<1>       system(bar.x, bar.V, bar.s, {}, bar.loads);
-    Parameters::Driver settings;
+    RNPSystem<1>      system(bar.x, bar.V, bar.s, {}, bar.loads);
+    Drivers::Settings settings;
     settings.type               = "newton";
     settings.load_steps         = 20;
     settings.residual_tolerance = 1e-10;
@@ -638,7 +638,7 @@ namespace
         RNPSystem<2> system(x, V, s, cut, loads);
         EXPECT_EQ(system.n_bonds(), 131100u);
         EXPECT_EQ(system.n_cut_bonds(), 1498u);
-        Parameters::Driver settings;
+        Drivers::Settings settings;
         settings.type               = "newton";
         settings.residual_tolerance = 1e-10;
         Drivers::NewtonDriver            driver(settings);
@@ -759,9 +759,9 @@ namespace
     // and comes down on the softening branch, whose states are unstable
     // (measured: 598.2 at step 14, then 582, 484, 361, ... down to 2.4 at
     // step 30 with the end displacement still growing).
-    Bar                bar(0.5, 4000., 1000.);
-    RNPSystem<1>       system(bar.x, bar.V, bar.s, {}, bar.loads);
-    Parameters::Driver settings;
+    Bar               bar(0.5, 4000., 1000.);
+    RNPSystem<1>      system(bar.x, bar.V, bar.s, {}, bar.loads);
+    Drivers::Settings settings;
     settings.type               = "newton";
     settings.load_steps         = 20;
     settings.residual_tolerance = 1e-10;

@@ -69,7 +69,7 @@ main(int argc, char **argv)
     s,
     [crack](const Point<2> &p, const Point<2> &q) { return crack.cuts(p, q); },
     loads);
-  Parameters::Driver settings;
+  Drivers::Settings settings;
   settings.type               = "newton";
   settings.load_steps         = n_steps;
   settings.residual_tolerance = 1e-10;

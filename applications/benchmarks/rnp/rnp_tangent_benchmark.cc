@@ -75,7 +75,7 @@ main(int argc, char **argv)
 
   // ---- a softened state: 8 load steps of 4e6 N (paper normalisation:
   // first softening at step 7, specs/000 §4.5)
-  Parameters::Driver settings;
+  Drivers::Settings settings;
   settings.type               = "newton";
   settings.load_steps         = 1;
   settings.residual_tolerance = 1e-10;

@@ -4,8 +4,8 @@
 
 #include <pdfem/drivers/dynamic_system_interface.h>
 #include <pdfem/fe/elastic_material.h>
-#include <pdfem/io/parameters.h>
 #include <pdfem/mesh/cracks.h>
+#include <pdfem/solvers/settings.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
@@ -86,7 +86,7 @@ namespace pdfem
       std::vector<std::string>            body_force;
       /// Vertices whose bonds never break (PDLSM-FEM's no-fail region).
       std::vector<unsigned int> no_fail_vertices;
-      Parameters::LinearSolver  linear_solver;
+      Solvers::Settings         linear_solver;
       /// The input file, named in error messages.
       std::string source_file;
     };

@@ -3,7 +3,7 @@
 #define PDFEM_DRIVERS_CENTRAL_DIFFERENCE_H
 
 #include <pdfem/drivers/dynamics.h>
-#include <pdfem/io/parameters.h>
+#include <pdfem/drivers/settings.h>
 
 namespace pdfem
 {
@@ -32,7 +32,7 @@ namespace pdfem
     class CentralDifference
     {
     public:
-      explicit CentralDifference(const Parameters::Driver &settings);
+      explicit CentralDifference(const Settings &settings);
 
       /**
        * Integrate from t = 0 (u = @p u with the prescribed values at t = 0,
@@ -70,11 +70,11 @@ namespace pdfem
       }
 
     private:
-      Parameters::Driver settings;
-      double             dt = 0.;
-      StabilityEstimate  estimate;
-      DynamicTimings     time_spent;
-      InstabilityReport  report;
+      Settings          settings;
+      double            dt = 0.;
+      StabilityEstimate estimate;
+      DynamicTimings    time_spent;
+      InstabilityReport report;
     };
   } // namespace Drivers
 } // namespace pdfem

@@ -3,7 +3,7 @@
 #define PDFEM_DRIVERS_NEWMARK_H
 
 #include <pdfem/drivers/dynamics.h>
-#include <pdfem/io/parameters.h>
+#include <pdfem/drivers/settings.h>
 
 namespace pdfem
 {
@@ -31,7 +31,7 @@ namespace pdfem
     class Newmark
     {
     public:
-      explicit Newmark(const Parameters::Driver &settings);
+      explicit Newmark(const Settings &settings);
 
       /// As CentralDifference::run().
       void
@@ -58,9 +58,9 @@ namespace pdfem
       }
 
     private:
-      Parameters::Driver settings;
-      DynamicTimings     time_spent;
-      unsigned int       factorizations = 0;
+      Settings       settings;
+      DynamicTimings time_spent;
+      unsigned int   factorizations = 0;
     };
   } // namespace Drivers
 } // namespace pdfem

@@ -2,9 +2,9 @@
 #ifndef PDFEM_DRIVERS_NEWTON_DRIVER_H
 #define PDFEM_DRIVERS_NEWTON_DRIVER_H
 
+#include <pdfem/drivers/settings.h>
 #include <pdfem/drivers/static_driver.h>
 #include <pdfem/drivers/system_interface.h>
-#include <pdfem/io/parameters.h>
 
 #include <cstddef>
 #include <functional>
@@ -100,7 +100,7 @@ namespace pdfem
                            double                         t,
                            SystemInterface::Vector       &dr_dt)>;
 
-      explicit NewtonDriver(const Parameters::Driver &settings);
+      explicit NewtonDriver(const Settings &settings);
 
       /**
        * @p u: initial guess in, last stable state out. @p stability may be
@@ -202,9 +202,9 @@ namespace pdfem
                  double                   t,
                  StepRecord              &record);
 
-      Parameters::Driver settings;
-      DriverTimings      time_spent;
-      NewtonOutcome      result;
+      Settings      settings;
+      DriverTimings time_spent;
+      NewtonOutcome result;
     };
   } // namespace Drivers
 } // namespace pdfem

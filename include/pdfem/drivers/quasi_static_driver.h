@@ -2,9 +2,9 @@
 #ifndef PDFEM_DRIVERS_QUASI_STATIC_DRIVER_H
 #define PDFEM_DRIVERS_QUASI_STATIC_DRIVER_H
 
+#include <pdfem/drivers/settings.h>
 #include <pdfem/drivers/static_driver.h>
 #include <pdfem/drivers/system_interface.h>
-#include <pdfem/io/parameters.h>
 
 #include <functional>
 #include <limits>
@@ -38,7 +38,7 @@ namespace pdfem
     class QuasiStaticDriver
     {
     public:
-      explicit QuasiStaticDriver(const Parameters::Driver &settings);
+      explicit QuasiStaticDriver(const Settings &settings);
 
       /**
        * @p system returns the current system (a criterion may rebuild it
@@ -57,8 +57,8 @@ namespace pdfem
       }
 
     private:
-      Parameters::Driver settings;
-      DriverTimings      time_spent;
+      Settings      settings;
+      DriverTimings time_spent;
     };
   } // namespace Drivers
 } // namespace pdfem

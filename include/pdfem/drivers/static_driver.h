@@ -2,8 +2,8 @@
 #ifndef PDFEM_DRIVERS_STATIC_DRIVER_H
 #define PDFEM_DRIVERS_STATIC_DRIVER_H
 
+#include <pdfem/drivers/settings.h>
 #include <pdfem/drivers/system_interface.h>
-#include <pdfem/io/parameters.h>
 
 #include <functional>
 
@@ -45,13 +45,13 @@ namespace pdfem
      * Pass 0 for no prediction.
      */
     StepRecord
-    equilibrate(SystemInterface          &system,
-                SystemInterface::Vector  &u,
-                double                    t,
-                double                    t_of_u,
-                unsigned int              step,
-                const Parameters::Driver &settings,
-                DriverTimings            &time_spent);
+    equilibrate(SystemInterface         &system,
+                SystemInterface::Vector &u,
+                double                   t,
+                double                   t_of_u,
+                unsigned int             step,
+                const Settings          &settings,
+                DriverTimings           &time_spent);
 
     /**
      * Static equilibrium: the load factor t goes from 0 to 1 in `Load steps`
@@ -67,7 +67,7 @@ namespace pdfem
     class StaticDriver
     {
     public:
-      explicit StaticDriver(const Parameters::Driver &settings);
+      explicit StaticDriver(const Settings &settings);
 
       /// @p u: initial guess in, solution out. @p on_step is called after
       /// each converged step (before the next one changes anything).
@@ -83,8 +83,8 @@ namespace pdfem
       }
 
     private:
-      Parameters::Driver settings;
-      DriverTimings      time_spent;
+      Settings      settings;
+      DriverTimings time_spent;
     };
   } // namespace Drivers
 } // namespace pdfem

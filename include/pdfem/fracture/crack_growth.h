@@ -4,7 +4,7 @@
 
 #include <pdfem/coupling/coupled_system.h>
 #include <pdfem/fracture/interaction_integral.h>
-#include <pdfem/io/parameters.h>
+#include <pdfem/fracture/settings.h>
 #include <pdfem/mesh/cracks.h>
 
 #include <deal.II/base/point.h>
@@ -98,21 +98,49 @@ namespace pdfem
     class CrackGrowth
     {
     public:
-      CrackGrowth(const Parameters::Fracture          &settings,
+      /**
+       * The crack state of @p initial_cracks in @p system. In 2D the tips
+       * are found (or taken from @p tip_at_end); in 3D with @p fronts_3d,
+       * the straight fronts and their points (for stress-intensity
+       * factors).
+       */
+      CrackGrowth(const Settings                      &settings,
                   const FE::ElasticMaterial           &material,
                   const std::vector<Mesh::Crack<dim>> &initial_cracks,
                   const Coupling::CoupledSystem<dim>  &system,
-                  const std::vector<bool>             &tip_at_end = {});
+                  const std::vector<bool>             &tip_at_end = {},
+                  bool                                 fronts_3d  = false);
       ~CrackGrowth();
 
       /**
-       * Evaluate the criterion on @p results; if @p allow_growth, grow the
-       * cracks that meet it and break their bonds in @p system. Collective.
+       * `mcts`: at every active tip K_I, K_II (and K_III, J) by the
+       * interaction integral, the MCTS kink angle and K_eq; where
+       * @p allow_growth and K_eq > K_Ic the tip advances and the bonds
+       * crossing the new segment break. Collective.
        */
       Assessment
-      evaluate(Coupling::CoupledSystem<dim>      &system,
-               const Coupling::NodalResults<dim> &results,
-               bool                               allow_growth);
+      grow_at_tips(Coupling::CoupledSystem<dim>      &system,
+                   const Coupling::NodalResults<dim> &results,
+                   bool                               allow_growth);
+
+      /// `max principal stress` (FC 2): virtual cracks through the most
+      /// stressed bonds above the tensile strength. Collective.
+      Assessment
+      grow_by_principal_stress(Coupling::CoupledSystem<dim>      &system,
+                               const Coupling::NodalResults<dim> &results,
+                               bool                               allow_growth);
+
+      /// `critical stretch`: bonds stretched beyond s_c break. Collective.
+      Assessment
+      break_by_stretch(Coupling::CoupledSystem<dim>      &system,
+                       const Coupling::NodalResults<dim> &results,
+                       bool                               allow_growth);
+
+      /// After bonds broke: count the pieces of the body into @p a.
+      static void
+      count_pieces(Assessment                         &a,
+                   const Coupling::CoupledSystem<dim> &system,
+                   const Coupling::NodalResults<dim>  &results);
 
       /// Re-attach to a rebuilt system (same mesh, another PD region).
       void

@@ -2,7 +2,7 @@
 #ifndef PDFEM_SOLVERS_LINEAR_SOLVER_H
 #define PDFEM_SOLVERS_LINEAR_SOLVER_H
 
-#include <pdfem/io/parameters.h>
+#include <pdfem/solvers/settings.h>
 
 #include <functional>
 #include <memory>
@@ -36,7 +36,7 @@ namespace pdfem
     class LinearSolver
     {
     public:
-      explicit LinearSolver(const Parameters::LinearSolver &settings);
+      explicit LinearSolver(const Solvers::Settings &settings);
       ~LinearSolver();
 
       /**
@@ -86,7 +86,7 @@ namespace pdfem
       }
 
     private:
-      Parameters::LinearSolver                                   settings;
+      Solvers::Settings                                          settings;
       std::vector<std::vector<bool>>                             constant_modes;
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
       const dealii::TrilinosWrappers::SparseMatrix *amg_matrix = nullptr;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-#include <pdfem/io/json_writer.h>
+#include <pdfem/base/json_writer.h>
 
 #include <cmath>
 #include <cstdio>

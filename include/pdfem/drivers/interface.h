@@ -1,0 +1,241 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef PDFEM_DRIVERS_INTERFACE_H
+#define PDFEM_DRIVERS_INTERFACE_H
+
+#include <pdfem/base/plugins.h>
+#include <pdfem/drivers/dynamics.h>
+#include <pdfem/drivers/newton_driver.h>
+#include <pdfem/drivers/quasi_static_driver.h>
+#include <pdfem/drivers/settings.h>
+#include <pdfem/drivers/static_driver.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pdfem
+{
+  namespace IO
+  {
+    class JsonWriter;
+  }
+
+  namespace Drivers
+  {
+    /**
+     * What a driver sees of the run it drives; the Simulator implements it
+     * (and a program may, to drive a system of its own). No dimension: the
+     * driver only moves vectors.
+     */
+    class Host
+    {
+    public:
+      virtual ~Host() = default;
+
+      /// The discretised problem. A crack criterion may replace it between
+      /// steps (a larger PD region, same DoFs): ask again after each step.
+      virtual SystemInterface &
+      system() = 0;
+
+      /// The same problem with its mass, for time integrators. The driver's
+      /// check() has made sure that the model has one.
+      virtual DynamicSystemInterface &
+      dynamic_system() = 0;
+
+      /// The unknowns: initial guess in, solution out.
+      virtual SystemInterface::Vector &
+      solution() = 0;
+
+      /// The initial velocity v0 (zero unless the scene gives one).
+      virtual void
+      initial_velocity(SystemInterface::Vector &v0) = 0;
+
+      /// The stability test of a nonlinear model (nullptr: none).
+      virtual StabilityInterface *
+      stability()
+      {
+        return nullptr;
+      }
+
+      /**
+       * d r / d t of a model whose loads are linear in t, for following
+       * the path past limit points: always for @p arc_length, else only
+       * where the host wants the snap-back continuation of hard loading
+       * (empty: none).
+       */
+      virtual NewtonDriver::LoadDerivative
+      load_derivative(bool arc_length)
+      {
+        (void)arc_length;
+        return {};
+      }
+
+      /**
+       * After each converged equilibrium: the crack criterion (which may
+       * break bonds when @p allow_growth) and the postprocessors (a
+       * history row, field output). Returns what the criterion did.
+       */
+      virtual GrowthCheck
+      after_equilibrium(const StepRecord &record, bool allow_growth) = 0;
+
+      /// After each stability test of a converged state (newton, arc
+      /// length).
+      virtual void
+      after_stability_check(const StabilityReport &)
+      {}
+
+      /// Dynamic runs: after each time step, before it is recorded: the
+      /// crack criterion at (u, t). Returns whether bonds broke.
+      virtual bool
+      after_time_step(const SystemInterface::Vector &u, double t) = 0;
+
+      /// Dynamic runs: a time step is complete (history, progress).
+      virtual void
+      record_time_step(const DynamicRecord &record) = 0;
+    };
+
+    /** What a driver may check of the rest of a run before it starts. */
+    struct RunTraits
+    {
+      /// The input file, for messages.
+      std::string file;
+      int         dim = 2;
+      /// The PD model needs Newton iterations (its forces are nonlinear).
+      bool nonlinear_model = false;
+      /// The material has a positive density (a mass matrix exists).
+      bool has_mass = false;
+      /// The linear solver assembles the coupled matrix (not 'amg fe').
+      bool assembled_matrix = true;
+      /// The model's name and the driver's own, for messages.
+      std::string model_name;
+      std::string driver_name;
+    };
+
+    /**
+     * A driver plugin: how loads or time advance and when equilibrium is
+     * sought (specs/004 §2). Register one with PDFEM_REGISTER_DRIVER at the
+     * end of its `.cc` file; it is then a choice of `Driver/Type`.
+     *
+     * The parameters of every driver live in `subsection Driver` (Settings
+     * declares them); a plugin parses them and validates what it needs.
+     */
+    class Interface
+    {
+    public:
+      virtual ~Interface() = default;
+
+      /// Read `subsection Driver` (Settings::parse), then initialize().
+      void
+      parse_parameters(dealii::ParameterHandler &prm,
+                       const std::string        &file,
+                       int                       dim);
+
+      /**
+       * Take @p settings (parsed, or translated from a PDLSM-FEM command
+       * file) and validate what this driver needs of them (InputError
+       * naming @p file and the parameter).
+       */
+      virtual void
+      initialize(const Settings &settings, const std::string &file, int dim);
+
+      /// Throw InputError if the run cannot be driven by this driver (by
+      /// default: a nonlinear model needs handles_nonlinear_models()).
+      virtual void
+      check(const RunTraits &traits) const;
+
+      /// Can the driver solve a nonlinear model (Newton with a tangent)?
+      virtual bool
+      handles_nonlinear_models() const
+      {
+        return false;
+      }
+
+      /// Remarks for stderr before the run (e.g. an unstable choice).
+      virtual std::vector<std::string>
+      notes() const
+      {
+        return {};
+      }
+
+      /// Does the driver integrate in time (history rows are time steps)?
+      virtual bool
+      dynamic() const
+      {
+        return false;
+      }
+
+      /// Does the driver grow cracks (so that a criterion may break bonds
+      /// after each equilibrium)?
+      virtual bool
+      grows_cracks() const
+      {
+        return false;
+      }
+
+      /// Run: @p host gives the system and receives every step.
+      virtual void
+      run(Host &host) = 0;
+
+      /// Add the driver's own members to summary.json's "final" object.
+      virtual void
+      write_summary(IO::JsonWriter &json) const;
+
+      /// Wall seconds per phase ("assembly", "solve", and for dynamic
+      /// runs the per-step figures).
+      virtual std::map<std::string, double>
+      timings() const = 0;
+
+      /// A progress line's end after the first step (e.g. the time step).
+      virtual std::string
+      first_step_note(const DynamicRecord &) const
+      {
+        return "";
+      }
+
+      /// Newton drivers: why and where the run stopped (nullptr: not one).
+      virtual const NewtonOutcome *
+      outcome() const
+      {
+        return nullptr;
+      }
+
+      /// The parsed parameters.
+      const Settings &
+      settings() const
+      {
+        return parameters;
+      }
+
+    protected:
+      Settings parameters;
+    };
+
+    /// The registry of drivers.
+    Plugins::Registry<Interface> &
+    registry();
+
+    /// The driver @p name (InputError naming `Driver/Type` if unknown).
+    std::unique_ptr<Interface>
+    create(const std::string &name, const std::string &file);
+  } // namespace Drivers
+} // namespace pdfem
+
+/**
+ * Register the driver class @p classname under @p name (a `Driver/Type`
+ * value) with a one-line @p description; at namespace scope in its `.cc`.
+ */
+#define PDFEM_REGISTER_DRIVER(classname, name, description)              \
+  namespace                                                              \
+  {                                                                      \
+    const bool PDFEM_PLUGIN_CONCAT(pdfem_driver_registered_, __LINE__) = \
+      ::pdfem::Drivers::registry().add(                                  \
+        name,                                                            \
+        description,                                                     \
+        {},                                                              \
+        []() -> std::unique_ptr<::pdfem::Drivers::Interface> {           \
+          return std::make_unique<classname>();                          \
+        });                                                              \
+  }
+
+#endif

@@ -1,0 +1,529 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The Simulator: one run of any driver, criterion and postprocessors.
+#include <pdfem/base/config.h>
+#include <pdfem/base/exceptions.h>
+#include <pdfem/fracture/crack_growth.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "simulator_impl.h"
+
+namespace pdfem
+{
+  using namespace dealii;
+  using internal::seconds_since;
+  using clock = std::chrono::steady_clock;
+
+  template <int dim>
+  RunSetup<dim>::RunSetup() = default;
+  template <int dim>
+  RunSetup<dim>::RunSetup(RunSetup &&) noexcept = default;
+  template <int dim>
+  RunSetup<dim> &
+  RunSetup<dim>::operator=(RunSetup &&) noexcept = default;
+  template <int dim>
+  RunSetup<dim>::~RunSetup() = default;
+
+  // ------------------------------------------------------------------ Impl
+  template <int dim>
+  Simulator<dim>::Impl::Impl(const Simulator<dim> &owner,
+                             RunSetup<dim>       &&setup_in,
+                             MPI_Comm              comm)
+    : owner(owner)
+    , setup(std::move(setup_in))
+    , comm(comm)
+    , root(Utilities::MPI::this_mpi_process(comm) == 0)
+    , progress(root ? &std::cout : nullptr)
+  {}
+
+  Drivers::RunTraits
+  make_run_traits(const std::string       &file,
+                  const int                dim,
+                  const std::string       &model_name,
+                  const bool               nonlinear,
+                  const double             density,
+                  const Solvers::Settings &linear_solver,
+                  const std::string       &driver_name)
+  {
+    Drivers::RunTraits traits;
+    traits.file             = file;
+    traits.dim              = dim;
+    traits.model_name       = model_name;
+    traits.nonlinear_model  = nonlinear;
+    traits.has_mass         = density > 0.;
+    traits.assembled_matrix = !(linear_solver.type == "gmres" &&
+                                linear_solver.preconditioner == "amg fe");
+    traits.driver_name      = driver_name;
+    return traits;
+  }
+
+  template <int dim>
+  void
+  check_plugins(const Drivers::Interface       &driver,
+                const Fracture::Criterion<dim> *criterion,
+                const Drivers::RunTraits       &traits,
+                const Fracture::Settings       &fracture)
+  {
+    driver.check(traits);
+    if (criterion && traits.nonlinear_model)
+      throw InputError(traits.file,
+                       "Fracture/Criterion",
+                       "the " + traits.model_name +
+                         " model softens its bonds itself: it takes no crack "
+                         "criterion",
+                       "none");
+    if (criterion)
+      criterion->check(Fracture::CriterionTraits{traits.file,
+                                                 driver.dynamic(),
+                                                 traits.driver_name});
+    if (fracture.adaptive_margin > 0. && driver.dynamic())
+      throw InputError(traits.file,
+                       "Fracture/Adaptive margin",
+                       "the adaptive PD region belongs to quasi-static runs",
+                       "0 with Driver/Type = " + traits.driver_name);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::Impl::check_plugins() const
+  {
+    pdfem::check_plugins<dim>(*driver,
+                              criterion.get(),
+                              make_run_traits(setup.file,
+                                              dim,
+                                              "pdlsm",
+                                              false,
+                                              setup.settings.material.density,
+                                              setup.settings.linear_solver,
+                                              setup.driver.type),
+                              setup.fracture);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::Impl::set_up()
+  {
+    for (const auto &note : setup.notes)
+      if (root)
+        std::cerr << "pdfem: note: " << note << std::endl;
+    for (const auto &note : driver->notes())
+      if (root)
+        std::cerr << "pdfem: note: " << note << std::endl;
+
+    auto &tria = *setup.tria;
+    if (setup.cell_is_pd.empty())
+      setup.cell_is_pd.assign(tria.n_active_cells(), false);
+    // A scene may start with PD only around its cracks.
+    initial_cracks = setup.settings.cracks;
+    Fracture::extend_pd_region(tria,
+                               initial_cracks,
+                               setup.fracture.adaptive_margin,
+                               setup.cell_is_pd);
+    coupled      = std::make_unique<Coupling::CoupledSystem<dim>>(tria,
+                                                             setup.cell_is_pd,
+                                                             setup.settings);
+    initial_size = coupled->size();
+    setup.timings["setup"] = seconds_since(setup.setup_start);
+    print_header();
+
+    if (criterion)
+      cracks = std::make_unique<Fracture::CrackGrowth<dim>>(
+        setup.fracture,
+        setup.settings.material,
+        initial_cracks,
+        *coupled,
+        setup.tip_at_end,
+        dim == 3 && criterion->tracks_tips());
+    coupled->initialize_vector(u);
+
+    // Every registered postprocessor, then the program's own, each taking
+    // part where it says so.
+    std::vector<std::unique_ptr<Postprocess::Interface<dim>>> offered;
+    for (const auto &name : Postprocess::registry<dim>().names())
+      offered.push_back(Postprocess::registry<dim>().create(name));
+    for (auto &p : postprocessors)
+      offered.push_back(std::move(p));
+    postprocessors.clear();
+    for (auto &p : offered)
+      {
+        p->initialize_simulator(owner);
+        if (p->initialize())
+          postprocessors.push_back(std::move(p));
+      }
+
+    std::vector<std::string> columns = {"step",
+                                        "time",
+                                        "load_factor",
+                                        "newton_iterations",
+                                        "linear_iterations",
+                                        "residual",
+                                        "n_broken_bonds",
+                                        "max_damage"};
+    if (criterion)
+      for (const auto &c : criterion->history_columns(*cracks))
+        columns.push_back(c);
+    for (const auto &p : postprocessors)
+      for (const auto &c : p->history_columns())
+        columns.push_back(c);
+    columns.push_back("wall_seconds");
+    history = std::make_unique<IO::History>(setup.out_dir + "/history.csv",
+                                            columns,
+                                            root);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::Impl::add_history_row(const std::vector<double> &base)
+  {
+    std::vector<double> row = base;
+    if (criterion)
+      criterion->history_values(*cracks, assessment, row);
+    for (const auto &p : postprocessors)
+      p->history_values(row);
+    row.push_back(seconds_since(setup.total_start));
+    history->add_row(row);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::Impl::update_results(
+    const Drivers::SystemInterface::Vector &u_now)
+  {
+    results = std::make_unique<Coupling::NodalResults<dim>>(
+      coupled->nodal_results(u_now));
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::Impl::write_fields(const double t)
+  {
+    const auto start = clock::now();
+    for (const auto &p : postprocessors)
+      p->write_fields(t);
+    output_time += seconds_since(start);
+  }
+
+  // ------------------------------------------------------- Drivers::Host
+  template <int dim>
+  void
+  Simulator<dim>::Impl::initial_velocity(Drivers::SystemInterface::Vector &v0)
+  {
+    coupled->interpolate(setup.driver.initial_velocity,
+                         "Driver/Initial velocity",
+                         v0);
+  }
+
+  template <int dim>
+  Drivers::GrowthCheck
+  Simulator<dim>::Impl::after_equilibrium(const Drivers::StepRecord &record,
+                                          const bool allow_growth)
+  {
+    const auto start      = clock::now();
+    step_record           = record;
+    n_steps               = record.step;
+    load_factor           = record.load_factor;
+    const bool fields_due = setup.write_every > 0 &&
+                            record.step % setup.write_every == 0 &&
+                            record.step < setup.driver.load_steps;
+    if (cracks || fields_due)
+      update_results(u);
+    assessment = Fracture::Assessment();
+    if (cracks)
+      {
+        assessment =
+          criterion->evaluate(*cracks, *coupled, *results, allow_growth);
+        Fracture::CrackGrowth<dim>::count_pieces(assessment,
+                                                 *coupled,
+                                                 *results);
+      }
+    criterion_time += seconds_since(start);
+
+    const Coupling::ProblemSize s = coupled->size();
+    add_history_row({double(record.step),
+                     record.time,
+                     record.load_factor,
+                     double(record.newton_iterations),
+                     double(record.linear_iterations),
+                     record.relative_residual,
+                     double(s.n_broken_bonds),
+                     coupled->max_damage()});
+    print_static_progress(record, s.n_broken_bonds);
+    if (fields_due)
+      write_fields(record.step);
+
+    Drivers::GrowthCheck check;
+    check.grew                = assessment.broken_bonds > 0;
+    check.critical_load_ratio = assessment.critical_load_ratio;
+    check.separated           = assessment.pieces > 1;
+    // The PD region follows the cracks: a new system on the same mesh and
+    // DoFs, with every crack so far cut.
+    if (check.grew && cracks &&
+        Fracture::extend_pd_region(*setup.tria,
+                                   cracks->segments(),
+                                   setup.fracture.adaptive_margin,
+                                   setup.cell_is_pd) > 0)
+      {
+        auto rebuilt   = setup.settings;
+        rebuilt.cracks = initial_cracks;
+        coupled.reset();
+        coupled =
+          std::make_unique<Coupling::CoupledSystem<dim>>(*setup.tria,
+                                                         setup.cell_is_pd,
+                                                         rebuilt);
+        std::vector<Mesh::Crack<dim>> grown(cracks->segments().begin() +
+                                              initial_cracks.size(),
+                                            cracks->segments().end());
+        coupled->break_bonds(grown);
+        cracks->attach(*coupled);
+      }
+    return check;
+  }
+
+  template <int dim>
+  bool
+  Simulator<dim>::Impl::after_time_step(
+    const Drivers::SystemInterface::Vector &u_now,
+    double)
+  {
+    if (!cracks)
+      return false;
+    const auto start = clock::now();
+    update_results(u_now);
+    assessment = criterion->evaluate(*cracks, *coupled, *results, true);
+    Fracture::CrackGrowth<dim>::count_pieces(assessment, *coupled, *results);
+    criterion_time += seconds_since(start);
+    return assessment.broken_bonds > 0;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::Impl::record_time_step(const Drivers::DynamicRecord &record)
+  {
+    const auto &prm  = setup.driver;
+    time_step_record = record;
+    n_steps          = record.step;
+    load_factor      = record.time / prm.end_time;
+    if (n_total_steps == 0 && record.time_step > 0.)
+      n_total_steps = static_cast<unsigned int>(
+        std::ceil(prm.end_time / record.time_step - 1e-9));
+    if (record.step == 0)
+      run_start = clock::now();
+    if (record.step == 0 && progress)
+      *progress << "  time step " << record.time_step << " s"
+                << driver->first_step_note(record) << "; " << n_total_steps
+                << " steps to t = " << prm.end_time << " s" << std::endl;
+    for (const auto &p : postprocessors)
+      p->every_time_step();
+    const bool last_step = record.step >= n_total_steps;
+    if (record.step % prm.history_interval != 0 && !last_step &&
+        !(record.energy_error > prm.energy_tolerance) &&
+        std::isfinite(record.energy_error))
+      return;
+    // Reactions of the supports (f_int - f_ext over each set) from the
+    // forces the integrator evaluated last (at this u and t).
+    if (!coupled->reaction_names().empty())
+      coupled->update_reactions();
+    const Coupling::ProblemSize s = coupled->size();
+    add_history_row({double(record.step),
+                     record.time,
+                     record.time / prm.end_time,
+                     0.,
+                     double(record.linear_iterations),
+                     0.,
+                     double(s.n_broken_bonds),
+                     coupled->max_damage()});
+    print_dynamic_progress(record, s.n_broken_bonds);
+  }
+
+  // ------------------------------------------------------------ Simulator
+  template <int dim>
+  Simulator<dim>::Simulator(RunSetup<dim>                           &&setup,
+                            MPI_Comm                                  comm,
+                            std::unique_ptr<Drivers::Interface>       driver,
+                            std::unique_ptr<Fracture::Criterion<dim>> criterion)
+    : impl(std::make_unique<Impl>(*this, std::move(setup), comm))
+  {
+    Impl &s = *impl;
+    if (!s.setup.tria)
+      throw InputError(s.setup.file, "", "the run has no mesh");
+    s.driver = driver ? std::move(driver) :
+                        Drivers::create(s.setup.driver.type, s.setup.file);
+    s.driver->initialize(s.setup.driver, s.setup.file, dim);
+    s.criterion = criterion ?
+                    std::move(criterion) :
+                    Fracture::create_criterion<dim>(s.setup.fracture.criterion,
+                                                    s.setup.file);
+    if (s.criterion)
+      s.criterion->initialize(s.setup.fracture, s.setup.file);
+    s.check_plugins();
+  }
+
+  template <int dim>
+  Simulator<dim>::~Simulator() = default;
+
+  template <int dim>
+  void
+  Simulator<dim>::add_postprocessor(
+    std::unique_ptr<Postprocess::Interface<dim>> p)
+  {
+    impl->postprocessors.push_back(std::move(p));
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::set_quiet(const bool quiet)
+  {
+    impl->progress = (impl->root && !quiet) ? &std::cout : nullptr;
+  }
+
+  template <int dim>
+  int
+  Simulator<dim>::run()
+  {
+    Impl &s = *impl;
+    s.set_up();
+    s.run_start = clock::now();
+    try
+      {
+        s.driver->run(s);
+      }
+    catch (const RunFailure &e)
+      {
+        s.exit_state = e.exit_state;
+        s.message    = e.what();
+        if (s.root)
+          std::cerr << "pdfem: run "
+                    << (s.exit_state == "separated" ? "ended" : "stopped")
+                    << ": " << s.message << std::endl;
+      }
+    for (const auto &[phase, seconds] : s.driver->timings())
+      s.setup.timings[phase] = seconds;
+    s.setup.timings["criterion"] = s.criterion_time;
+
+    // ---- results at the last state
+    const auto start = clock::now();
+    if (s.driver->dynamic() && !s.coupled->reaction_names().empty())
+      {
+        TrilinosWrappers::MPI::Vector r;
+        s.coupled->residual(s.u, s.time_step_record.time, r, false);
+      }
+    s.update_results(s.u);
+    s.write_fields(s.driver->dynamic() ? s.time_step_record.time :
+                                         double(s.n_steps));
+    for (const auto &p : s.postprocessors)
+      p->finish();
+    s.output_time += seconds_since(start);
+    s.setup.timings["output"] = s.output_time;
+    s.setup.timings["total"]  = seconds_since(s.setup.total_start);
+    s.write_summary();
+    s.print_end();
+    return s.exit_state == "completed" || s.exit_state == "separated" ? 0 : 3;
+  }
+
+  // ------------------------------------------------------- read access
+  template <int dim>
+  MPI_Comm
+  Simulator<dim>::get_mpi_communicator() const
+  {
+    return impl->comm;
+  }
+
+  template <int dim>
+  const RunSetup<dim> &
+  Simulator<dim>::get_setup() const
+  {
+    return impl->setup;
+  }
+
+  template <int dim>
+  const Coupling::CoupledSystem<dim> &
+  Simulator<dim>::get_system() const
+  {
+    return *impl->coupled;
+  }
+
+  template <int dim>
+  Coupling::CoupledSystem<dim> &
+  Simulator<dim>::get_mutable_system() const
+  {
+    return *impl->coupled;
+  }
+
+  template <int dim>
+  const TrilinosWrappers::MPI::Vector &
+  Simulator<dim>::get_solution() const
+  {
+    return impl->u;
+  }
+
+  template <int dim>
+  const Coupling::NodalResults<dim> &
+  Simulator<dim>::get_nodal_results() const
+  {
+    if (!impl->results)
+      impl->update_results(impl->u);
+    return *impl->results;
+  }
+
+  template <int dim>
+  const Drivers::Interface &
+  Simulator<dim>::get_driver() const
+  {
+    return *impl->driver;
+  }
+
+  template <int dim>
+  const Drivers::StepRecord &
+  Simulator<dim>::get_step_record() const
+  {
+    return impl->step_record;
+  }
+
+  template <int dim>
+  const Drivers::DynamicRecord &
+  Simulator<dim>::get_time_step_record() const
+  {
+    return impl->time_step_record;
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::get_load_factor() const
+  {
+    return impl->load_factor;
+  }
+
+  template <int dim>
+  const Fracture::CrackGrowth<dim> *
+  Simulator<dim>::get_cracks() const
+  {
+    return impl->cracks.get();
+  }
+
+  template <int dim>
+  const Fracture::Criterion<dim> *
+  Simulator<dim>::get_criterion() const
+  {
+    return impl->criterion.get();
+  }
+
+  template <int dim>
+  const Fracture::Assessment &
+  Simulator<dim>::get_assessment() const
+  {
+    return impl->assessment;
+  }
+
+#define INSTANTIATE(dim)                                             \
+  template struct RunSetup<dim>;                                     \
+  template class Simulator<dim>;                                     \
+  template void check_plugins<dim>(const Drivers::Interface &,       \
+                                   const Fracture::Criterion<dim> *, \
+                                   const Drivers::RunTraits &,       \
+                                   const Fracture::Settings &);
+  PDFEM_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+} // namespace pdfem

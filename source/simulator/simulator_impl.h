@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Private to the simulator module: the state of a run and the driver host
+// it implements.
+#ifndef PDFEM_SOURCE_SIMULATOR_SIMULATOR_IMPL_H
+#define PDFEM_SOURCE_SIMULATOR_SIMULATOR_IMPL_H
+
+#include <pdfem/io/history.h>
+#include <pdfem/simulator/postprocess.h>
+#include <pdfem/simulator/simulator.h>
+
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <chrono>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace pdfem
+{
+  namespace internal
+  {
+    /// Wall seconds since @p start.
+    inline double
+    seconds_since(const std::chrono::steady_clock::time_point &start)
+    {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                           start)
+        .count();
+    }
+  } // namespace internal
+
+  template <int dim>
+  struct Simulator<dim>::Impl : public Drivers::Host
+  {
+    Impl(const Simulator<dim> &owner, RunSetup<dim> &&setup, MPI_Comm comm);
+
+    // ---- Drivers::Host
+    Drivers::SystemInterface &
+    system() override
+    {
+      return *coupled;
+    }
+    Drivers::DynamicSystemInterface &
+    dynamic_system() override
+    {
+      return *coupled;
+    }
+    Drivers::SystemInterface::Vector &
+    solution() override
+    {
+      return u;
+    }
+    void
+    initial_velocity(Drivers::SystemInterface::Vector &v0) override;
+    Drivers::GrowthCheck
+    after_equilibrium(const Drivers::StepRecord &record,
+                      bool                       allow_growth) override;
+    bool
+    after_time_step(const Drivers::SystemInterface::Vector &u_now,
+                    double                                  t) override;
+    void
+    record_time_step(const Drivers::DynamicRecord &record) override;
+
+    // ---- the run (simulator.cc)
+    /// Check that driver, criterion and set-up fit (InputError).
+    void
+    check_plugins() const;
+    /// The coupled system, the cracks, the postprocessors, the history.
+    void
+    set_up();
+    /// One history.csv row: the base columns, the criterion's, the
+    /// postprocessors' and the wall time.
+    void
+    add_history_row(const std::vector<double> &base);
+    /// Nodal results of the current solution.
+    void
+    update_results(const Drivers::SystemInterface::Vector &u_now);
+    /// Field output through the postprocessors.
+    void
+    write_fields(double t);
+
+    // ---- outputs (simulator_output.cc)
+    void
+    print_header() const;
+    /// The progress lines (rank 0; the broken bonds are counted by every
+    /// rank before).
+    void
+    print_static_progress(const Drivers::StepRecord &record,
+                          unsigned long              n_broken_bonds) const;
+    void
+    print_dynamic_progress(const Drivers::DynamicRecord &record,
+                           unsigned long                 n_broken_bonds) const;
+    void
+    write_summary() const;
+    void
+    print_end() const;
+
+    const Simulator<dim>                         &owner;
+    RunSetup<dim>                                 setup;
+    MPI_Comm                                      comm;
+    bool                                          root;
+    std::ostream                                 *progress = nullptr;
+    std::unique_ptr<Drivers::Interface>           driver;
+    std::unique_ptr<Fracture::Criterion<dim>>     criterion;
+    std::unique_ptr<Coupling::CoupledSystem<dim>> coupled;
+    std::unique_ptr<Fracture::CrackGrowth<dim>>   cracks;
+    std::vector<Mesh::Crack<dim>>                 initial_cracks;
+    std::vector<std::unique_ptr<Postprocess::Interface<dim>>> postprocessors;
+    std::unique_ptr<IO::History>                              history;
+    dealii::TrilinosWrappers::MPI::Vector                     u;
+    std::unique_ptr<Coupling::NodalResults<dim>>              results;
+    Fracture::Assessment                                      assessment;
+    Drivers::StepRecord                                       step_record;
+    Drivers::DynamicRecord                                    time_step_record;
+    Coupling::ProblemSize                                     initial_size;
+    double                                                    load_factor = 0.;
+    unsigned int                                              n_steps     = 0;
+    /// Dynamic runs: the steps to the end time (once the step is known).
+    unsigned int                          n_total_steps = 0;
+    std::chrono::steady_clock::time_point run_start;
+    double                                criterion_time = 0.;
+    double                                output_time    = 0.;
+    std::string                           exit_state     = "completed";
+    std::string                           message;
+  };
+} // namespace pdfem
+
+#endif

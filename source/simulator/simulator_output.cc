@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// What a Simulator prints and writes of itself: the progress lines and
+// summary.json (the postprocessors add their own members).
+#include <pdfem/base/config.h>
+#include <pdfem/base/json_writer.h>
+#include <pdfem/simulator/summary.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+
+#include "simulator_impl.h"
+#include <sys/resource.h>
+
+namespace pdfem
+{
+  using namespace dealii;
+  using internal::seconds_since;
+
+
+  template <int dim>
+  void
+  Simulator<dim>::Impl::print_header() const
+  {
+    if (!progress)
+      return;
+    const Coupling::ProblemSize &size = initial_size;
+    *progress << "pdfem " << PDFEM_VERSION << ": " << setup.file << "\n"
+              << "  " << dim << "D, " << size.n_cells << " cells ("
+              << size.n_pd_cells << " PD), " << size.n_nodes << " nodes ("
+              << size.n_pd_nodes << " PD, " << size.n_interface_nodes
+              << " interface), " << size.n_dofs << " DoFs, " << size.n_bonds
+              << " bonds, " << Utilities::MPI::n_mpi_processes(comm)
+              << " rank(s), driver " << setup.driver.type << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::Impl::print_static_progress(
+    const Drivers::StepRecord &record,
+    const unsigned long        n_broken_bonds) const
+  {
+    if (!progress)
+      return;
+    // step, load, iterations, broken bonds, time left
+    const unsigned int n     = setup.driver.load_steps;
+    const double       spent = seconds_since(setup.setup_start);
+    *progress << "Step " << std::setw(4) << record.step << "/" << n
+              << "  t = " << std::setw(10) << std::setprecision(4)
+              << record.load_factor << "  iterations "
+              << record.newton_iterations << " (linear "
+              << record.linear_iterations << ")  |r|/|f| = " << std::scientific
+              << std::setprecision(2) << record.relative_residual
+              << std::defaultfloat << "  broken bonds " << n_broken_bonds;
+    if (criterion)
+      *progress << criterion->progress(*cracks, assessment);
+    *progress << "  left ~" << std::fixed << std::setprecision(1)
+              << (record.step < n ? spent / record.step * (n - record.step) :
+                                    0.)
+              << " s" << std::defaultfloat << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::Impl::print_dynamic_progress(
+    const Drivers::DynamicRecord &record,
+    const unsigned long           n_broken_bonds) const
+  {
+    const unsigned int every = std::max(1u, n_total_steps / 20);
+    if (!progress || (record.step % every != 0 && record.step < n_total_steps))
+      return;
+    const double thickness = coupled->thickness();
+    const double spent     = seconds_since(run_start);
+    *progress << "Step " << std::setw(6) << record.step << "/" << n_total_steps
+              << "  t = " << std::scientific << std::setprecision(3)
+              << record.time
+              << "  E_kin = " << thickness * record.kinetic_energy
+              << "  E_strain = " << thickness * record.strain_energy
+              << "  energy error " << std::setprecision(2)
+              << record.energy_error << std::defaultfloat << "  broken bonds "
+              << n_broken_bonds << "  left ~" << std::fixed
+              << std::setprecision(1)
+              << (record.step > 0 && record.step < n_total_steps ?
+                    spent / record.step * (n_total_steps - record.step) :
+                    0.)
+              << " s" << std::defaultfloat << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::Impl::write_summary() const
+  {
+    struct rusage usage;
+    getrusage(RUSAGE_SELF, &usage);
+    const Coupling::ProblemSize final_size = coupled->size(); // collective
+    if (!root)
+      return;
+    std::ofstream  out(setup.out_dir + "/summary.json");
+    IO::JsonWriter json(out);
+    json.begin_object();
+    Summary::write_header(
+      json, setup, comm, exit_state, message, initial_size, final_size);
+    json.value("steps", static_cast<unsigned long>(n_steps));
+
+    json.begin_object("final");
+    if (driver->dynamic())
+      json.value("time", time_step_record.time);
+    json.value("load_factor", load_factor);
+    json.value("pd_cells", final_size.n_pd_cells);
+    json.value("pd_nodes", final_size.n_pd_nodes);
+    Summary::write_field_extremes(json, *results);
+    if (criterion)
+      criterion->write_final(*cracks, assessment, json);
+    for (const auto &p : postprocessors)
+      p->write_final(json);
+    json.end_object();
+    for (const auto &p : postprocessors)
+      p->write_sections(json);
+
+    json.begin_object("timings");
+    for (const auto &[phase, seconds] : setup.timings)
+      json.value(phase, seconds);
+    json.end_object();
+    json.value("peak_memory_mb_rank0", usage.ru_maxrss / 1024.); // Linux: kB
+    json.end_object();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::Impl::print_end() const
+  {
+    if (!progress)
+      return;
+    *progress << "Exit state: " << exit_state << ". Results in "
+              << setup.out_dir << "/" << std::endl;
+    if (setup.print_timings)
+      for (const auto &[phase, seconds] : setup.timings)
+        *progress << "  " << std::setw(24) << std::left << phase << std::right
+                  << std::setw(10) << std::fixed << std::setprecision(3)
+                  << seconds << " s" << std::defaultfloat << std::endl;
+  }
+
+#define INSTANTIATE(dim)                                      \
+  template void Simulator<dim>::Impl::print_header() const;   \
+  template void Simulator<dim>::Impl::print_static_progress(  \
+    const Drivers::StepRecord &, unsigned long) const;        \
+  template void Simulator<dim>::Impl::print_dynamic_progress( \
+    const Drivers::DynamicRecord &, unsigned long) const;     \
+  template void Simulator<dim>::Impl::write_summary() const;  \
+  template void Simulator<dim>::Impl::print_end() const;
+  PDFEM_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+} // namespace pdfem
