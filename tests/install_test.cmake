@@ -1,5 +1,5 @@
 # Install pdfem into a temporary prefix, then build and run applications/examples/custom_program
-# against it with find_package(pdfem), configured EXACTLY as its README says: no generator, no
+# against it with find_package(pdfem), configured EXACTLY as its README says: Ninja, no
 # CMAKE_BUILD_TYPE. The program must run both horizon factors, exit with 0 (a crash at exit is the
 # sign of two deal.II libraries) and load only one deal.II library (ldd: libdeal.ii.so or
 # libdeal.ii.g.so, never both). Last, a consumer that names a build type other than pdfem's
@@ -16,9 +16,9 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install "${BUILD}" --prefix "${WORK}/
 if(rc)
   message(FATAL_ERROR "cmake --install failed")
 endif()
-# cmake -S applications/examples/custom_program -B build-custom -DCMAKE_PREFIX_PATH=$HOME/pdfem
+# cmake -S applications/examples/custom_program -B build-custom -G Ninja -DCMAKE_PREFIX_PATH=$HOME/pdfem
 execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE}/applications/examples/custom_program"
-  -B "${WORK}/build-custom" -DCMAKE_PREFIX_PATH=${WORK}/prefix
+  -B "${WORK}/build-custom" -G Ninja -DCMAKE_PREFIX_PATH=${WORK}/prefix
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(rc)
   message(FATAL_ERROR "configuring against the installed pdfem failed:\n${out}\n${err}")
@@ -68,7 +68,7 @@ endif()
 
 # Another build type than pdfem's: refused by find_package(pdfem), with the reason.
 execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE}/applications/examples/custom_program"
-  -B "${WORK}/build-other" -DCMAKE_PREFIX_PATH=${WORK}/prefix -DCMAKE_BUILD_TYPE=${OTHER_BUILD_TYPE}
+  -B "${WORK}/build-other" -G Ninja -DCMAKE_PREFIX_PATH=${WORK}/prefix -DCMAKE_BUILD_TYPE=${OTHER_BUILD_TYPE}
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc OR NOT err MATCHES "pdfem was built with CMAKE_BUILD_TYPE=")
   message(FATAL_ERROR "configuring with CMAKE_BUILD_TYPE=${OTHER_BUILD_TYPE} was not refused with "
