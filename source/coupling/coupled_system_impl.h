@@ -48,7 +48,7 @@ namespace pdfem
            const std::vector<bool>                                 &cell_is_pd,
            const Settings<dim>                                     &settings);
 
-      // ----- set-up steps (coupled_system_setup.cc)
+      // ----- set-up steps (coupled_system_setup.cc, _families.cc)
       void
       make_fe_and_dofs();
       void
