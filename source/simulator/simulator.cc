@@ -7,6 +7,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 
 #include "simulator_impl.h"
@@ -349,6 +350,29 @@ namespace pdfem
     Impl &s = *impl;
     if (!s.setup.tria)
       throw InputError(s.setup.file, "", "the run has no mesh");
+    if (s.setup.total_start == clock::time_point())
+      s.setup.total_start = clock::now();
+    if (s.setup.setup_start == clock::time_point())
+      s.setup.setup_start = clock::now();
+    if (s.setup.out_dir.empty())
+      s.setup.out_dir = "output-" + (s.setup.name.empty() ? std::string("run") :
+                                                             s.setup.name);
+    // The output folder (rank 0), before any work.
+    std::string folder_error;
+    if (s.root)
+      {
+        std::error_code ec;
+        std::filesystem::create_directories(s.setup.out_dir, ec);
+        if (ec || !std::filesystem::is_directory(s.setup.out_dir))
+          folder_error = "cannot create the output folder '" +
+                         s.setup.out_dir + "': " + ec.message();
+      }
+    folder_error = Utilities::MPI::broadcast(comm, folder_error, 0);
+    if (!folder_error.empty())
+      throw InputError(s.setup.file,
+                       "Output/Directory",
+                       folder_error,
+                       "a writable folder");
     s.driver = driver ? std::move(driver) :
                         Drivers::create(s.setup.driver.type, s.setup.file);
     s.driver->initialize(s.setup.driver, s.setup.file, dim);
