@@ -564,10 +564,16 @@ namespace pdfem
         run(Host &host) override
         {
           driver = std::make_unique<NewtonDriver>(parameters);
+          // Each recorded state passed the stability check (when there is
+          // one): the host hears of it before the state.
+          const bool checked =
+            parameters.stability_check && host.stability() != nullptr;
           driver->run(
             host.system(),
             host.solution(),
-            [&host](const StepRecord &record) {
+            [this, &host, checked](const StepRecord &record) {
+              if (checked)
+                host.after_stability_check(driver->outcome().last_check);
               host.after_equilibrium(record, false);
             },
             host.stability(),

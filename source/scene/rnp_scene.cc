@@ -6,8 +6,7 @@
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
 #include <pdfem/coupling/rnp_system.h>
-#include <pdfem/drivers/newton_driver.h>
-#include <pdfem/drivers/static_driver.h>
+#include <pdfem/drivers/interface.h>
 #include <pdfem/io/history.h>
 #include <pdfem/io/json_writer.h>
 
@@ -171,12 +170,6 @@ namespace pdfem
           const auto        &loads   = m.loads;
           const unsigned int n_dofs  = m.n_dofs();
           auto              &timings = setup.timings;
-          // the Newton driver's outcome and timings, also when it fails
-          const auto keep = [&](const Drivers::NewtonDriver &driver) {
-            outcome             = driver.outcome();
-            timings["assembly"] = driver.timings().assembly;
-            timings["solve"]    = driver.timings().solve;
-          };
           // f_ext(t) = t q and prescribed values affine in t,
           // u_p(t) = u_p(0) + t w: soft loading (w = 0), hard loading
           // (q = 0) or both. d r / d t = q - K_fp(u) w on the free
@@ -228,64 +221,113 @@ namespace pdfem
                     out[d] = (*q)[d] - Kw[d];
                 out.compress(VectorOperation::insert);
               };
-          if (setup.driver.type == "arc length")
+
+          /// What the driver plugin sees of the RNP run.
+          class Host : public Drivers::Host
+          {
+          public:
+            Host(
+              Coupling::RNPSystem<dim>                               &system,
+              TrilinosWrappers::MPI::Vector                          &u,
+              const Drivers::NewtonDriver::LoadDerivative            &dr_dt,
+              const bool                                              hard,
+              const std::function<void(const Drivers::StepRecord &)> &on_step,
+              const std::function<void(const Drivers::StabilityReport &)>
+                &on_check)
+              : rnp(system)
+              , u(u)
+              , dr_dt(dr_dt)
+              , hard(hard)
+              , on_step(on_step)
+              , on_check(on_check)
+            {}
+            Drivers::SystemInterface &
+            system() override
             {
-              if (!linear_in_t)
-                throw InputError(
-                  prm.file,
-                  "Driver/Type",
-                  "arc length needs loads linear in t (tractions and body "
-                  "force t q, prescribed values u_p(0) + t w)",
-                  "such loads, or the newton driver");
-              Drivers::NewtonDriver driver(setup.driver);
-              try
-                {
-                  driver.run_arc_length(system,
-                                        u,
-                                        dr_dt,
-                                        setup.driver.arc_length_steps,
-                                        on_step,
-                                        &system,
-                                        on_check);
-                }
-              catch (...)
-                {
-                  keep(driver);
-                  throw;
-                }
-              keep(driver);
+              return rnp;
             }
-          else if (setup.driver.type == "newton")
+            Drivers::DynamicSystemInterface &
+            dynamic_system() override
             {
-              Drivers::NewtonDriver driver(setup.driver);
-              try
-                {
-                  // The snap-back continuation under hard loading only: under
-                  // force control a fold is the end of quasi-static growth
-                  // (the jump is the dynamic, unstable growth).
-                  driver.run(system,
-                             u,
-                             on_step,
-                             &system,
-                             umax > 0. ?
-                               dr_dt :
-                               Drivers::NewtonDriver::LoadDerivative());
-                }
-              catch (...)
-                {
-                  keep(driver);
-                  throw;
-                }
-              keep(driver);
+              // The drivers' check() keeps time integrators away from rnp.
+              throw RunFailure("unsupported", "the rnp system has no mass");
             }
-          else
+            Drivers::SystemInterface::Vector &
+            solution() override
             {
-              Drivers::StaticDriver driver(setup.driver);
-              driver.run(system, u, on_step);
-              timings["assembly"]      = driver.timings().assembly;
-              timings["solve"]         = driver.timings().solve;
+              return u;
+            }
+            void
+            initial_velocity(Drivers::SystemInterface::Vector &) override
+            {}
+            Drivers::StabilityInterface *
+            stability() override
+            {
+              return &rnp;
+            }
+            // Arc length: whenever loads are linear in t. Newton: the
+            // snap-back continuation under hard loading only; under force
+            // control a fold is the end of quasi-static growth (the jump is
+            // the dynamic, unstable growth).
+            Drivers::NewtonDriver::LoadDerivative
+            load_derivative(const bool arc_length) override
+            {
+              return arc_length || hard ?
+                       dr_dt :
+                       Drivers::NewtonDriver::LoadDerivative();
+            }
+            Drivers::GrowthCheck
+            after_equilibrium(const Drivers::StepRecord &record, bool) override
+            {
+              on_step(record);
+              return Drivers::GrowthCheck();
+            }
+            void
+            after_stability_check(const Drivers::StabilityReport &r) override
+            {
+              on_check(r);
+            }
+            bool
+            after_time_step(const Drivers::SystemInterface::Vector &,
+                            double) override
+            {
+              return false;
+            }
+            void
+            record_time_step(const Drivers::DynamicRecord &) override
+            {}
+
+          private:
+            Coupling::RNPSystem<dim>                               &rnp;
+            TrilinosWrappers::MPI::Vector                          &u;
+            const Drivers::NewtonDriver::LoadDerivative            &dr_dt;
+            const bool                                              hard;
+            const std::function<void(const Drivers::StepRecord &)> &on_step;
+            const std::function<void(const Drivers::StabilityReport &)>
+              &on_check;
+          } host(system, u, dr_dt, umax > 0., on_step, on_check);
+
+          auto driver = Drivers::create(setup.driver.type, prm.file);
+          driver->initialize(setup.driver, prm.file, dim);
+          // the driver's outcome and timings, also when it fails
+          const auto keep = [&](const bool completed) {
+            for (const auto &[phase, seconds] : driver->timings())
+              timings[phase] = seconds;
+            if (driver->outcome())
+              outcome = *driver->outcome();
+            else if (completed) // a driver without a stability check
               outcome.last_stable_load = 1.;
+          };
+          try
+            {
+              driver->run(host);
             }
+          catch (...)
+            {
+              keep(false);
+              throw;
+            }
+          keep(true);
         }
 
         /// nodes.csv: position, displacement and damage of each node.
@@ -528,9 +570,7 @@ namespace pdfem
         run.last_u.assign(n_dofs, 0.);
         // -1: not checked; the Newton driver records stable states only,
         // the arc length driver reports every check before the step
-        run.last_stable =
-          setup.driver.type == "newton" && setup.driver.stability_check ? 1. :
-                                                                          -1.;
+        run.last_stable     = -1.;
         const auto on_check = [&](const Drivers::StabilityReport &report) {
           run.last_stable = report.stable() ? 1. : 0.;
         };

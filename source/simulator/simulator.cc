@@ -376,6 +376,9 @@ namespace pdfem
     s.driver = driver ? std::move(driver) :
                         Drivers::create(s.setup.driver.type, s.setup.file);
     s.driver->initialize(s.setup.driver, s.setup.file, dim);
+    // The driver's validated parameters (time step, monitor points parsed)
+    // are the run's.
+    s.setup.driver = s.driver->settings();
     s.criterion = criterion ?
                     std::move(criterion) :
                     Fracture::create_criterion<dim>(s.setup.fracture.criterion,
