@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "dynamics_internal.h"
+#include "time_integration_run.h"
 
 namespace pdfem
 {
@@ -207,10 +208,8 @@ namespace pdfem
     namespace
     {
       /// The `explicit` driver plugin: CentralDifference.
-      class ExplicitRun : public Interface
+      class ExplicitRun : public TimeIntegrationRun<CentralDifference>
       {
-        using Integrator = CentralDifference;
-
       public:
         void
         initialize(const Settings    &settings,
@@ -238,66 +237,6 @@ namespace pdfem
           return {};
         }
 
-        bool
-        dynamic() const override
-        {
-          return true;
-        }
-
-        bool
-        grows_cracks() const override
-        {
-          return true; // the criterion runs after every time step
-        }
-
-        void
-        check(const RunTraits &traits) const override
-        {
-          Interface::check(traits);
-          if (!traits.has_mass)
-            throw InputError(traits.file,
-                             "Material/Density",
-                             "rho = 0 for a dynamic run (Driver/Type = " +
-                               traits.driver_name + ")",
-                             "rho > 0 [kg/m^3]");
-        }
-
-        std::map<std::string, double>
-        timings() const override
-        {
-          const DynamicTimings &t =
-            integrator ? integrator->timings() : DynamicTimings();
-          const double n = std::max(1u, t.n_steps);
-          return {{"assembly",
-                   t.internal_force + t.external_force + t.factorize},
-                  {"solve", t.solve + t.update},
-                  {"time_loop", t.steps},
-                  {"seconds_per_step", t.steps / n},
-                  {"internal_force_per_step", t.internal_force / n},
-                  {"external_force_per_step", t.external_force / n},
-                  {"update_per_step", t.update / n},
-                  {"solve_per_step", t.solve / n},
-                  {"factorize", t.factorize},
-                  {"eigenvalue", t.eigenvalue}};
-        }
-
-        void
-        run(Host &host) override
-        {
-          integrator = std::make_unique<Integrator>(parameters);
-          SystemInterface::Vector v0;
-          host.initial_velocity(v0);
-          integrator->run(
-            host.dynamic_system(),
-            host.solution(),
-            v0,
-            [&host](const DynamicRecord &record) {
-              host.record_time_step(record);
-            },
-            [&host](const SystemInterface::Vector &u, const double t) {
-              return host.after_time_step(u, t);
-            });
-        }
 
         std::string
         first_step_note(const DynamicRecord &record) const override
@@ -337,9 +276,6 @@ namespace pdfem
               json.value("recommended_time_step", i.recommended_time_step);
             }
         }
-
-      private:
-        std::unique_ptr<Integrator> integrator;
       };
     } // namespace
 

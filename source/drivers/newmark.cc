@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "dynamics_internal.h"
+#include "time_integration_run.h"
 
 namespace pdfem
 {
@@ -235,10 +236,8 @@ namespace pdfem
     namespace
     {
       /// The `newmark` driver plugin: Newmark (HHT-alpha).
-      class NewmarkRun : public Interface
+      class NewmarkRun : public TimeIntegrationRun<Newmark>
       {
-        using Integrator = Newmark;
-
       public:
         void
         initialize(const Settings    &settings,
@@ -281,7 +280,7 @@ namespace pdfem
         void
         check(const RunTraits &traits) const override
         {
-          check_dynamic(traits);
+          TimeIntegrationRun<Newmark>::check(traits);
           if (!traits.assembled_matrix)
             throw InputError(traits.file,
                              "Linear solver/Preconditioner",
@@ -290,66 +289,6 @@ namespace pdfem
                              "amg or ilu (or Type = direct)");
         }
 
-        bool
-        dynamic() const override
-        {
-          return true;
-        }
-
-        bool
-        grows_cracks() const override
-        {
-          return true; // the criterion runs after every time step
-        }
-
-        void
-        check_dynamic(const RunTraits &traits) const
-        {
-          Interface::check(traits);
-          if (!traits.has_mass)
-            throw InputError(traits.file,
-                             "Material/Density",
-                             "rho = 0 for a dynamic run (Driver/Type = " +
-                               traits.driver_name + ")",
-                             "rho > 0 [kg/m^3]");
-        }
-
-        std::map<std::string, double>
-        timings() const override
-        {
-          const DynamicTimings &t =
-            integrator ? integrator->timings() : DynamicTimings();
-          const double n = std::max(1u, t.n_steps);
-          return {{"assembly",
-                   t.internal_force + t.external_force + t.factorize},
-                  {"solve", t.solve + t.update},
-                  {"time_loop", t.steps},
-                  {"seconds_per_step", t.steps / n},
-                  {"internal_force_per_step", t.internal_force / n},
-                  {"external_force_per_step", t.external_force / n},
-                  {"update_per_step", t.update / n},
-                  {"solve_per_step", t.solve / n},
-                  {"factorize", t.factorize},
-                  {"eigenvalue", t.eigenvalue}};
-        }
-
-        void
-        run(Host &host) override
-        {
-          integrator = std::make_unique<Integrator>(parameters);
-          SystemInterface::Vector v0;
-          host.initial_velocity(v0);
-          integrator->run(
-            host.dynamic_system(),
-            host.solution(),
-            v0,
-            [&host](const DynamicRecord &record) {
-              host.record_time_step(record);
-            },
-            [&host](const SystemInterface::Vector &u, const double t) {
-              return host.after_time_step(u, t);
-            });
-        }
 
         void
         write_summary(IO::JsonWriter &json) const override
@@ -363,9 +302,6 @@ namespace pdfem
                      static_cast<unsigned long>(
                        integrator ? integrator->n_factorizations() : 0));
         }
-
-      private:
-        std::unique_ptr<Integrator> integrator;
       };
     } // namespace
 

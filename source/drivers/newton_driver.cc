@@ -536,11 +536,7 @@ namespace pdfem
         std::map<std::string, double>
         timings() const override
         {
-          return driver ?
-                   std::map<std::string, double>{
-                     {"assembly", driver->timings().assembly},
-                     {"solve", driver->timings().solve}} :
-                   std::map<std::string, double>{};
+          return phase_timings(driver ? &driver->timings() : nullptr);
         }
 
         const NewtonOutcome *

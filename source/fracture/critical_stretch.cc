@@ -1,11 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The `critical stretch` crack criterion plugin.
 #include <pdfem/base/exceptions.h>
-#include <pdfem/base/json_writer.h>
 #include <pdfem/fracture/criterion.h>
 
-#include <iomanip>
-#include <sstream>
+#include "driving_value_criterion.h"
 
 namespace pdfem
 {
@@ -19,13 +17,17 @@ namespace pdfem
        * 2005; Ha & Bobaru 2010; CrackGrowth::break_by_stretch).
        */
       template <int dim>
-      class CriticalStretch : public Criterion<dim>
+      class CriticalStretch : public DrivingValueCriterion<dim>
       {
       public:
+        CriticalStretch()
+          : DrivingValueCriterion<dim>("max_stretch_ratio", "s/s_c")
+        {}
+
         void
         initialize(const Settings &settings, const std::string &file) override
         {
-          Criterion<dim>::initialize(settings, file);
+          DrivingValueCriterion<dim>::initialize(settings, file);
           if (!(settings.critical_stretch > 0.) &&
               !(settings.fracture_energy > 0.))
             throw InputError(file,
@@ -44,38 +46,6 @@ namespace pdfem
                  const bool                         allow_growth) override
         {
           return cracks.break_by_stretch(system, results, allow_growth);
-        }
-
-        std::vector<std::string>
-        history_columns(const CrackGrowth<dim> &) const override
-        {
-          return {"max_stretch_ratio"};
-        }
-
-        void
-        history_values(const CrackGrowth<dim> &,
-                       const Assessment    &assessment,
-                       std::vector<double> &row) const override
-        {
-          row.push_back(assessment.max_driving_value);
-        }
-
-        std::string
-        progress(const CrackGrowth<dim> &,
-                 const Assessment &assessment) const override
-        {
-          std::ostringstream s;
-          s << "  s/s_c " << std::setprecision(3)
-            << assessment.max_driving_value;
-          return s.str();
-        }
-
-        void
-        write_final(const CrackGrowth<dim> &,
-                    const Assessment &assessment,
-                    IO::JsonWriter   &json) const override
-        {
-          json.value("max_stretch_ratio", assessment.max_driving_value);
         }
       };
     } // namespace

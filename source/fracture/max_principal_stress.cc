@@ -1,11 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The `max principal stress` crack criterion plugin (PDLSM-FEM's FC 2).
 #include <pdfem/base/exceptions.h>
-#include <pdfem/base/json_writer.h>
 #include <pdfem/fracture/criterion.h>
 
-#include <iomanip>
-#include <sstream>
+#include "driving_value_criterion.h"
 
 namespace pdfem
 {
@@ -19,13 +17,18 @@ namespace pdfem
        * (specs/004 §3.2, eq. 43-45; CrackGrowth::grow_by_principal_stress).
        */
       template <int dim>
-      class MaximumPrincipalStress : public Criterion<dim>
+      class MaximumPrincipalStress : public DrivingValueCriterion<dim>
       {
       public:
+        MaximumPrincipalStress()
+          : DrivingValueCriterion<dim>("max_bond_principal_stress",
+                                       "sigma_1/sigma_ult")
+        {}
+
         void
         initialize(const Settings &settings, const std::string &file) override
         {
-          Criterion<dim>::initialize(settings, file);
+          DrivingValueCriterion<dim>::initialize(settings, file);
           if (!(settings.tensile_strength > 0.))
             throw InputError(file,
                              "Fracture/Tensile strength",
@@ -45,36 +48,11 @@ namespace pdfem
           return cracks.grow_by_principal_stress(system, results, allow_growth);
         }
 
-        std::vector<std::string>
-        history_columns(const CrackGrowth<dim> &) const override
+      protected:
+        double
+        scale() const override
         {
-          return {"max_bond_principal_stress"};
-        }
-
-        void
-        history_values(const CrackGrowth<dim> &,
-                       const Assessment    &assessment,
-                       std::vector<double> &row) const override
-        {
-          row.push_back(assessment.max_driving_value);
-        }
-
-        std::string
-        progress(const CrackGrowth<dim> &,
-                 const Assessment &assessment) const override
-        {
-          std::ostringstream s;
-          s << "  sigma_1/sigma_ult " << std::setprecision(3)
-            << assessment.max_driving_value / this->parameters.tensile_strength;
-          return s.str();
-        }
-
-        void
-        write_final(const CrackGrowth<dim> &,
-                    const Assessment &assessment,
-                    IO::JsonWriter   &json) const override
-        {
-          json.value("max_bond_principal_stress", assessment.max_driving_value);
+          return this->parameters.tensile_strength;
         }
       };
     } // namespace

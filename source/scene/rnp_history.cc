@@ -19,14 +19,7 @@ namespace pdfem
       base_history_columns(const std::vector<std::string> &reaction_sets,
                            const bool                      reaction_group)
       {
-        std::vector<std::string> columns = {"step",
-                                            "time",
-                                            "load_factor",
-                                            "newton_iterations",
-                                            "linear_iterations",
-                                            "residual",
-                                            "n_broken_bonds",
-                                            "max_damage"};
+        std::vector<std::string> columns = Summary::first_history_columns();
         for (const auto &set : reaction_sets)
           for (const auto &c : component_names<dim>())
             columns.push_back("reaction_" + IO::History::column_name(set) +

@@ -3,6 +3,7 @@
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
 #include <pdfem/fracture/crack_growth.h>
+#include <pdfem/simulator/summary.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -155,14 +156,7 @@ namespace pdfem
           postprocessors.push_back(std::move(p));
       }
 
-    std::vector<std::string> columns = {"step",
-                                        "time",
-                                        "load_factor",
-                                        "newton_iterations",
-                                        "linear_iterations",
-                                        "residual",
-                                        "n_broken_bonds",
-                                        "max_damage"};
+    std::vector<std::string> columns = Summary::first_history_columns();
     if (criterion)
       for (const auto &c : criterion->history_columns(*cracks))
         columns.push_back(c);
@@ -355,8 +349,8 @@ namespace pdfem
     if (s.setup.setup_start == clock::time_point())
       s.setup.setup_start = clock::now();
     if (s.setup.out_dir.empty())
-      s.setup.out_dir = "output-" + (s.setup.name.empty() ? std::string("run") :
-                                                             s.setup.name);
+      s.setup.out_dir =
+        "output-" + (s.setup.name.empty() ? std::string("run") : s.setup.name);
     // The output folder (rank 0), before any work.
     std::string folder_error;
     if (s.root)
@@ -364,8 +358,8 @@ namespace pdfem
         std::error_code ec;
         std::filesystem::create_directories(s.setup.out_dir, ec);
         if (ec || !std::filesystem::is_directory(s.setup.out_dir))
-          folder_error = "cannot create the output folder '" +
-                         s.setup.out_dir + "': " + ec.message();
+          folder_error = "cannot create the output folder '" + s.setup.out_dir +
+                         "': " + ec.message();
       }
     folder_error = Utilities::MPI::broadcast(comm, folder_error, 0);
     if (!folder_error.empty())
@@ -379,9 +373,9 @@ namespace pdfem
     // The driver's validated parameters (time step, monitor points parsed)
     // are the run's.
     s.setup.driver = s.driver->settings();
-    s.criterion = criterion ?
-                    std::move(criterion) :
-                    Fracture::create_criterion<dim>(s.setup.fracture.criterion,
+    s.criterion    = criterion ?
+                       std::move(criterion) :
+                       Fracture::create_criterion<dim>(s.setup.fracture.criterion,
                                                     s.setup.file);
     if (s.criterion)
       s.criterion->initialize(s.setup.fracture, s.setup.file);

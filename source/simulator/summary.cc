@@ -15,6 +15,19 @@ namespace pdfem
   {
     using namespace dealii;
 
+    std::vector<std::string>
+    first_history_columns()
+    {
+      return {"step",
+              "time",
+              "load_factor",
+              "newton_iterations",
+              "linear_iterations",
+              "residual",
+              "n_broken_bonds",
+              "max_damage"};
+    }
+
     template <int dim>
     void
     write_header(IO::JsonWriter              &json,

@@ -39,9 +39,11 @@ for name in ${INPUTS:-box fc1 fc2 explicit}; do
     else run "$name" new "$new" "$pair"; run "$name" old "$old" "$pair"; fi
   done
   # paired ratios new / old of the wall time, and their median
-  awk -F, -v n="$name" '$1 == n { t[$2 "," $3] = $4; p[$2] = 1 }
-    END { m = 0; for (k in p) { r[++m] = t[k ",new"] / t[k ",old"] }
-          asort(r); printf "%-9s new/old wall time: median %.3f (", n, (m % 2 ? r[(m + 1) / 2] : (r[m / 2] + r[m / 2 + 1]) / 2);
-          for (i = 1; i <= m; ++i) printf "%s%.3f", (i > 1 ? " " : ""), r[i]; print ")" }' "$csv"
+  ratios=$(awk -F, -v n="$name" '$1 == n { t[$2 "," $3] = $4; p[$2] = 1 }
+    END { for (k in p) printf "%.3f\n", t[k ",new"] / t[k ",old"] }' "$csv" | sort -n)
+  count=$(echo "$ratios" | wc -l)
+  median=$(echo "$ratios" | awk -v c="$count" '{ r[NR] = $1 }
+    END { printf "%.3f", (c % 2 ? r[(c + 1) / 2] : (r[c / 2] + r[c / 2 + 1]) / 2) }')
+  echo "$name new/old wall time: median $median ($(echo $ratios))"
 done
 echo "compare.sh: $csv"

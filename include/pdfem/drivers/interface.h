@@ -211,6 +211,16 @@ namespace pdfem
       Settings parameters;
     };
 
+    /// "assembly" and "solve" of @p t (none if @p t is nullptr: the driver
+    /// has not run).
+    inline std::map<std::string, double>
+    phase_timings(const DriverTimings *t)
+    {
+      if (t == nullptr)
+        return {};
+      return {{"assembly", t->assembly}, {"solve", t->solve}};
+    }
+
     /// The registry of drivers.
     Plugins::Registry<Interface> &
     registry();

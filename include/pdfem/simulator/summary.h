@@ -14,9 +14,15 @@ namespace pdfem
     class JsonWriter;
   }
 
-  /** The parts of summary.json that every run writes alike. */
+  /** The parts of summary.json and history.csv that every run writes alike. */
   namespace Summary
   {
+    /// history.csv's first columns, the same for every run: step, time,
+    /// load_factor, newton_iterations, linear_iterations, residual,
+    /// n_broken_bonds, max_damage.
+    std::vector<std::string>
+    first_history_columns();
+
     /// The opening members: version, scene, input file, dimension, ranks,
     /// threads, driver, criterion, exit state, message and "problem" (the
     /// sizes, bonds broken and nodes decoupled from @p final_size).
