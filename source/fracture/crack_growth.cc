@@ -138,6 +138,19 @@ namespace pdfem
                  settings.growth_length_absolute :
                  settings.growth_length * integral->element_size(p);
       }
+
+      Assessment
+      mcts(Coupling::CoupledSystem<dim>      &system,
+           const Coupling::NodalResults<dim> &results,
+           bool                               allow_growth);
+      Assessment
+      principal_stress(Coupling::CoupledSystem<dim>      &system,
+                       const Coupling::NodalResults<dim> &results,
+                       bool                               allow_growth);
+      Assessment
+      critical_stretch(Coupling::CoupledSystem<dim>      &system,
+                       const Coupling::NodalResults<dim> &results,
+                       bool                               allow_growth);
     };
 
     template <int dim>
@@ -227,6 +240,35 @@ namespace pdfem
     }
 
     template <int dim>
+    Assessment
+    CrackGrowth<dim>::grow_at_tips(Coupling::CoupledSystem<dim>      &system,
+                                   const Coupling::NodalResults<dim> &results,
+                                   const bool allow_growth)
+    {
+      return impl->mcts(system, results, allow_growth);
+    }
+
+    template <int dim>
+    Assessment
+    CrackGrowth<dim>::grow_by_principal_stress(
+      Coupling::CoupledSystem<dim>      &system,
+      const Coupling::NodalResults<dim> &results,
+      const bool                         allow_growth)
+    {
+      return impl->principal_stress(system, results, allow_growth);
+    }
+
+    template <int dim>
+    Assessment
+    CrackGrowth<dim>::break_by_stretch(
+      Coupling::CoupledSystem<dim>      &system,
+      const Coupling::NodalResults<dim> &results,
+      const bool                         allow_growth)
+    {
+      return impl->critical_stretch(system, results, allow_growth);
+    }
+
+    template <int dim>
     void
     CrackGrowth<dim>::count_pieces(Assessment                         &a,
                                    const Coupling::CoupledSystem<dim> &system,
@@ -242,21 +284,10 @@ namespace pdfem
 
     template <int dim>
     Assessment
-    CrackGrowth<dim>::grow_at_tips(Coupling::CoupledSystem<dim>      &system,
-                                   const Coupling::NodalResults<dim> &results,
-                                   const bool allow_growth)
+    CrackGrowth<dim>::Impl::mcts(Coupling::CoupledSystem<dim>      &system,
+                                 const Coupling::NodalResults<dim> &results,
+                                 const bool allow_growth)
     {
-      [[maybe_unused]] auto       &tips           = impl->tips;
-      [[maybe_unused]] auto       &integral       = impl->integral;
-      [[maybe_unused]] const auto &settings       = impl->settings;
-      [[maybe_unused]] auto       &segments       = impl->segments;
-      [[maybe_unused]] auto       &paths          = impl->paths;
-      [[maybe_unused]] auto       &virtual_cracks = impl->virtual_cracks;
-      [[maybe_unused]] auto       &fronts         = impl->fronts;
-      [[maybe_unused]] const auto &material       = impl->material;
-      [[maybe_unused]] const auto  length_at = [this](const Point<dim> &p) {
-        return impl->length_at(p);
-      };
       Assessment a;
       a.critical_load_ratio = std::numeric_limits<double>::infinity();
       std::vector<Mesh::Crack<dim>> grown;
@@ -323,22 +354,11 @@ namespace pdfem
 
     template <int dim>
     Assessment
-    CrackGrowth<dim>::grow_by_principal_stress(
+    CrackGrowth<dim>::Impl::principal_stress(
       Coupling::CoupledSystem<dim>      &system,
       const Coupling::NodalResults<dim> &results,
       const bool                         allow_growth)
     {
-      [[maybe_unused]] auto       &tips           = impl->tips;
-      [[maybe_unused]] auto       &integral       = impl->integral;
-      [[maybe_unused]] const auto &settings       = impl->settings;
-      [[maybe_unused]] auto       &segments       = impl->segments;
-      [[maybe_unused]] auto       &paths          = impl->paths;
-      [[maybe_unused]] auto       &virtual_cracks = impl->virtual_cracks;
-      [[maybe_unused]] auto       &fronts         = impl->fronts;
-      [[maybe_unused]] const auto &material       = impl->material;
-      [[maybe_unused]] const auto  length_at = [this](const Point<dim> &p) {
-        return impl->length_at(p);
-      };
       Assessment   a;
       const double strength = settings.tensile_strength;
       // Candidates (stress, k, m) with k < m, this rank's first.
@@ -447,22 +467,11 @@ namespace pdfem
 
     template <int dim>
     Assessment
-    CrackGrowth<dim>::break_by_stretch(
+    CrackGrowth<dim>::Impl::critical_stretch(
       Coupling::CoupledSystem<dim>      &system,
       const Coupling::NodalResults<dim> &results,
       const bool                         allow_growth)
     {
-      [[maybe_unused]] auto       &tips           = impl->tips;
-      [[maybe_unused]] auto       &integral       = impl->integral;
-      [[maybe_unused]] const auto &settings       = impl->settings;
-      [[maybe_unused]] auto       &segments       = impl->segments;
-      [[maybe_unused]] auto       &paths          = impl->paths;
-      [[maybe_unused]] auto       &virtual_cracks = impl->virtual_cracks;
-      [[maybe_unused]] auto       &fronts         = impl->fronts;
-      [[maybe_unused]] const auto &material       = impl->material;
-      [[maybe_unused]] const auto  length_at = [this](const Point<dim> &p) {
-        return impl->length_at(p);
-      };
       // s_c given, or from G_c by the bond-based energy release through a
       // crack plane (Silling & Askari 2005 in 3D; Ha & Bobaru 2010 in plane
       // stress): an approximation for PDLSM, whose bonds carry no energy
