@@ -420,6 +420,12 @@ main(int argc, char **argv)
       // class: read its count back through the Simulator.
       const auto *criterion = dynamic_cast<const Step2::BondStrainEnergy<2> *>(
         simulator.get_criterion());
+      if (criterion == nullptr)
+        {
+          pcout << "step-2: error: the run's criterion is not this program's "
+                << "'bond strain energy'" << std::endl;
+          return 1;
+        }
       const pdfem::Coupling::CoupledSystem<2> &system = simulator.get_system();
       const unsigned long n_broken = criterion->n_bonds_broken();
       const unsigned long n_all    = system.size().n_broken_bonds;
