@@ -58,9 +58,9 @@
 // t = 0. A tension wave runs to the left at the bar speed
 // c = sqrt(E / rho) = 5092 m/s; behind its front the material moves at
 // v = sigma / (rho c) = 0.51 m/s, with the kinetic energy density
-// rho v^2 / 2 = sigma^2 / (2 E) = 350 J/m^3 (one-dimensional theory, e.g.
-// Graff, Wave Motion in Elastic Solids, §2.1). The band |x| < 0.1 is PD.
-// So:
+// rho v^2 / 2 = sigma^2 / (2 E) = 350 J/m^3 (the elementary theory of rods,
+// e.g. Graff, Wave Motion in Elastic Solids, ch. 2). The band |x| < 0.1 is
+// PD. So:
 //
 //   - until the front reaches x = 0.1, at t = 0.4 / c = 79 us, the PD
 //     region is at rest;
