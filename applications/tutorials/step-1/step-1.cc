@@ -211,7 +211,7 @@ namespace Step1
     pdfem::Coupling::BoundaryCondition<2> pull;
     pull.name         = "right";
     pull.boundary_ids = {names.boundaries.at("right")};
-    pull.component    = 2; // = dim: the normal component
+    pull.component    = 2;                      // = dim: the normal component
     pull.expression   = pdfem::number(tension); // "7e+06"
     settings.traction.push_back(pull);
 
