@@ -211,8 +211,9 @@ namespace Step1
     pdfem::Coupling::BoundaryCondition<2> pull;
     pull.name         = "right";
     pull.boundary_ids = {names.boundaries.at("right")};
-    pull.component    = 2;                      // = dim: the normal component
-    pull.expression   = pdfem::number(tension); // "7e+06"
+    // Component dim = 2: the normal one. The expression is sigma, "7e+06".
+    pull.component  = 2;
+    pull.expression = pdfem::number(tension);
     settings.traction.push_back(pull);
 
     // The linear solver: the default, a direct solve by MUMPS (the coupled
