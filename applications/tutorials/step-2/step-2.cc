@@ -203,12 +203,12 @@ namespace Step2
                                 1. / a.max_driving_value :
                                 std::numeric_limits<double>::infinity();
       // Which bonds break: those above the threshold, but of them only the
-      // most critical, within `window` of the largest ratio. Breaking every
-      // bond above the threshold at once lets damage spread over the whole
-      // region that is critical in this state; breaking the worst ones and
-      // finding equilibrium again (the driver holds the load while bonds
-      // break, and raises it only when nothing breaks) lets the crack tip,
-      // where the stretch concentrates anew after every break, lead. This
+      // most critical, whose ratio is at least `window` times the largest.
+      // Breaking every bond above the threshold at once lets damage spread over
+      // the whole region that is critical in this state; breaking the worst
+      // ones and finding equilibrium again (the driver holds the load while
+      // bonds break, and raises it only when nothing breaks) lets the crack
+      // tip, where the stretch concentrates anew after every break, lead. This
       // is how lattice models of fracture break their elements (Schlangen &
       // Garboczi, Eng. Fract. Mech. 1997). Either way, at every load the
       // final state has no bond above the threshold. allow_growth is false
