@@ -3,12 +3,46 @@
 # Each folder SOURCE/<name>/ (e.g. step-1) becomes the page tutorial_<name> (step-1: tutorial_step_1):
 # its README.md (the first "# " heading is the title), then the listing of each <name>/*.cc, which is
 # also a Doxygen example (tutorials/<name>/<file>.cc, cross-linked from the classes it uses). The page
-# "Tutorials" lists them all. Images next to a README are copied so that ![..](x.png) finds them.
+# "Tutorials" lists them all, after the body of SOURCE/README.md if there is one. Images next to a README
+# are copied so that ![..](x.png) finds them. A README's other relative links (written for a reader of the
+# source tree, e.g. ../../examples/custom_program/README.md) are made absolute, so that Doxygen finds the
+# pages they point to; links to a tutorial's README.md become references to its page.
 file(REMOVE_RECURSE "${OUTPUT}")
 file(MAKE_DIRECTORY "${OUTPUT}")
 if(NOT IS_DIRECTORY "${SOURCE}")
   return()
 endif()
+
+# The relative links of the markdown text in <_var>, read from the folder <_from>, made absolute (or
+# references to the tutorial pages); images in the same folder and absolute or external links are kept.
+function(_tutorial_links _var _from)
+  set(_text "${${_var}}")
+  # The targets "(path)" with a folder in them (no "]" in the pattern: it would split CMake's list).
+  string(REGEX MATCHALL "\\([^)#: ]+/[^): ]*\\)" _links "${_text}")
+  list(REMOVE_DUPLICATES _links)
+  foreach(_link ${_links})
+    string(REGEX REPLACE "^\\(([^)#]*)(#[^)]*)?\\)$" "\\1" _path "${_link}")
+    string(FIND "${_text}" "](${_path}" _at)
+    if(_at EQUAL -1 OR _path MATCHES "^/")
+      continue() # not a link, or an absolute one
+    endif()
+    get_filename_component(_target "${_from}/${_path}" ABSOLUTE)
+    if(NOT EXISTS "${_target}")
+      continue()
+    endif()
+    get_filename_component(_target_dir "${_target}" DIRECTORY)
+    get_filename_component(_target_parent "${_target_dir}" DIRECTORY)
+    get_filename_component(_target_name "${_target}" NAME)
+    if(_target_parent STREQUAL SOURCE AND _target_name STREQUAL "README.md")
+      get_filename_component(_name "${_target_dir}" NAME)
+      string(MAKE_C_IDENTIFIER "tutorial_${_name}" _label)
+      string(REPLACE "](${_path})" "](@ref ${_label})" _text "${_text}")
+    else()
+      string(REPLACE "](${_path}" "](${_target}" _text "${_text}")
+    endif()
+  endforeach()
+  set(${_var} "${_text}" PARENT_SCOPE)
+endfunction()
 
 file(GLOB _dirs LIST_DIRECTORIES true "${SOURCE}/*")
 if(NOT CMAKE_VERSION VERSION_LESS 3.18)
@@ -16,7 +50,14 @@ if(NOT CMAKE_VERSION VERSION_LESS 3.18)
 else()
   list(SORT _dirs)
 endif()
-set(_index "# Tutorials {#tutorials}\n\nThe literate programs in `applications/tutorials/`, in order:\n\n")
+set(_index "# Tutorials {#tutorials}\n\n")
+if(EXISTS "${SOURCE}/README.md")
+  file(READ "${SOURCE}/README.md" _intro)
+  string(REGEX REPLACE "^#[ \t]+[^\n]*\n" "" _intro "${_intro}")
+  _tutorial_links(_intro "${SOURCE}")
+  string(APPEND _index "${_intro}\n")
+endif()
+string(APPEND _index "The literate programs in `applications/tutorials/`, in order:\n\n")
 set(_examples "")
 set(_count 0)
 foreach(_dir ${_dirs})
@@ -37,6 +78,7 @@ foreach(_dir ${_dirs})
       string(SUBSTRING "${_body}" ${_skip} -1 _body)
     endif()
   endif()
+  _tutorial_links(_body "${_dir}")
   set(_page "# ${_title} {#${_label}}\n\n${_body}\n")
   foreach(_program ${_programs})
     set(_page "${_page}\n## The program ${_program} {#${_label}_${_count}}\n\n")
