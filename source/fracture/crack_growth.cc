@@ -232,6 +232,13 @@ namespace pdfem
     CrackGrowth<dim>::~CrackGrowth() = default;
 
     template <int dim>
+    const FE::ElasticMaterial &
+    CrackGrowth<dim>::material() const
+    {
+      return impl->material;
+    }
+
+    template <int dim>
     void
     CrackGrowth<dim>::attach(const Coupling::CoupledSystem<dim> &system)
     {

@@ -307,9 +307,12 @@ namespace pdfem
     if (record.step == 0)
       run_start = clock::now();
     if (record.step == 0 && progress)
-      *progress << "  time step " << record.time_step << " s"
-                << driver->first_step_note(record) << "; " << n_total_steps
-                << " steps to t = " << prm.end_time << " s" << std::endl;
+      {
+        const internal::KeepFormat keep(*progress);
+        *progress << "  time step " << record.time_step << " s"
+                  << driver->first_step_note(record) << "; " << n_total_steps
+                  << " steps to t = " << prm.end_time << " s" << std::endl;
+      }
     for (const auto &p : postprocessors)
       p->every_time_step();
     const bool last_step = record.step >= n_total_steps;

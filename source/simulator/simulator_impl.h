@@ -29,6 +29,28 @@ namespace pdfem
                                            start)
         .count();
     }
+
+    /// Restores a stream's format (precision, flags) when it goes out of
+    /// scope, so that the progress lines leave a program's std::cout as
+    /// they found it.
+    class KeepFormat
+    {
+    public:
+      explicit KeepFormat(std::ostream &out)
+        : out(out)
+        , saved(nullptr)
+      {
+        saved.copyfmt(out);
+      }
+      ~KeepFormat()
+      {
+        out.copyfmt(saved);
+      }
+
+    private:
+      std::ostream &out;
+      std::ios      saved;
+    };
   } // namespace internal
 
   template <int dim>

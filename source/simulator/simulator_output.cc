@@ -27,6 +27,7 @@ namespace pdfem
   {
     if (!progress)
       return;
+    const internal::KeepFormat   keep(*progress);
     const Coupling::ProblemSize &size = initial_size;
     *progress << "pdfem " << PDFEM_VERSION << ": " << setup.file << "\n"
               << "  " << dim << "D, " << size.n_cells << " cells ("
@@ -45,6 +46,7 @@ namespace pdfem
   {
     if (!progress)
       return;
+    const internal::KeepFormat keep(*progress);
     // step, load, iterations, broken bonds, time left
     const unsigned int n     = setup.driver.load_steps;
     const double       spent = seconds_since(setup.setup_start);
@@ -72,8 +74,9 @@ namespace pdfem
     const unsigned int every = std::max(1u, n_total_steps / 20);
     if (!progress || (record.step % every != 0 && record.step < n_total_steps))
       return;
-    const double thickness = coupled->thickness();
-    const double spent     = seconds_since(run_start);
+    const internal::KeepFormat keep(*progress);
+    const double               thickness = coupled->thickness();
+    const double               spent     = seconds_since(run_start);
     *progress << "Step " << std::setw(6) << record.step << "/" << n_total_steps
               << "  t = " << std::scientific << std::setprecision(3)
               << record.time
@@ -134,6 +137,7 @@ namespace pdfem
   {
     if (!progress)
       return;
+    const internal::KeepFormat keep(*progress);
     *progress << "Exit state: " << exit_state << ". Results in "
               << setup.out_dir << "/" << std::endl;
     if (setup.print_timings)

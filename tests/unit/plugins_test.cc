@@ -20,6 +20,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -195,8 +196,17 @@ namespace
     const unsigned int before = CountingDriver::runs;
 
     Simulator<2> simulator(std::move(setup), comm);
-    simulator.set_quiet(true);
-    EXPECT_EQ(simulator.run(), 0);
+    // The progress lines go to std::cout and leave its format as it was.
+    std::ostringstream progress;
+    std::streambuf    *cout_buffer = std::cout.rdbuf(progress.rdbuf());
+    std::cout.precision(7);
+    const int exit_code = simulator.run();
+    std::cout.rdbuf(cout_buffer);
+    EXPECT_EQ(exit_code, 0);
+    EXPECT_EQ(std::cout.precision(), 7);
+    std::cout.precision(6);
+    EXPECT_NE(progress.str().find("Exit state: completed"), std::string::npos)
+      << progress.str();
     EXPECT_EQ(CountingDriver::runs, before + 1);
 
     // u(4) = sigma L / E = 1e6 * 4 / 1e9 = 4e-3 (nu = 0, uniaxial).

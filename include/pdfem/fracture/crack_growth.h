@@ -142,6 +142,10 @@ namespace pdfem
                    const Coupling::CoupledSystem<dim> &system,
                    const Coupling::NodalResults<dim>  &results);
 
+      /// The material (for criteria stated in energies or moduli).
+      const FE::ElasticMaterial &
+      material() const;
+
       /// Re-attach to a rebuilt system (same mesh, another PD region).
       void
       attach(const Coupling::CoupledSystem<dim> &system);
