@@ -25,6 +25,7 @@ declare -A input=(
   [fc1]="$peer/plateCrack/platCrack_quasiStatic_FC1.in"
   [fc2]="$peer/plateCrack/platCrack_quasiStatic_FC2.in"
   [explicit]="$peer/plateCrack/platCrack_NewMarkOFF_FC2.in")
+mkdir -p "$out"
 csv="$out/simulator_speed.csv"
 echo "input,pair,build,wall_seconds,pdfem_total_seconds,steps,exit_state" > "$csv"
 run() { # build label input pair
