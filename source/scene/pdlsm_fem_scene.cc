@@ -310,7 +310,7 @@ namespace pdfem
             GridTools::invert_all_negative_measure_cells(vertices, cells);
             GridTools::consistently_order_cells(cells);
           }
-        setup.tria = make_triangulation<dim>(comm);
+        setup.create_triangulation(comm);
         auto &tria = *setup.tria;
         try
           {

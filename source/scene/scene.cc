@@ -40,7 +40,6 @@ namespace pdfem
     using Coupling::stress_component;
     using Coupling::stress_component_names;
     using internal::make_output_folder;
-    using internal::make_triangulation;
     using internal::seconds_since;
     using internal::Setup;
 
@@ -219,8 +218,7 @@ namespace pdfem
         msh = Utilities::MPI::broadcast(comm, msh, 0);
 
         const Mesh::PhysicalNames names = Mesh::read_physical_names(msh, dim);
-        setup.tria                      = make_triangulation<dim>(comm);
-        auto &tria                      = *setup.tria;
+        auto                     &tria  = setup.create_triangulation(comm);
         try
           {
             Mesh::read_msh<dim>(msh, tria);
@@ -393,22 +391,6 @@ namespace pdfem
         MPI_Barrier(comm);
       }
 
-      template <int dim>
-      std::unique_ptr<parallel::shared::Triangulation<dim>>
-      make_triangulation(MPI_Comm comm)
-      {
-        return std::make_unique<parallel::shared::Triangulation<dim>>(
-          comm,
-          Triangulation<dim>::none,
-          false,
-          parallel::shared::Triangulation<dim>::partition_metis);
-      }
-
-#define INSTANTIATE(dim)                                         \
-  template std::unique_ptr<parallel::shared::Triangulation<dim>> \
-    make_triangulation<dim>(MPI_Comm);
-      PDFEM_INSTANTIATE(INSTANTIATE)
-#undef INSTANTIATE
     } // namespace internal
 
     namespace

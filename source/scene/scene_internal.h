@@ -52,10 +52,6 @@ namespace pdfem
                          const std::string &parameter,
                          MPI_Comm           comm);
 
-      /// An empty shared triangulation partitioned by METIS.
-      template <int dim>
-      std::unique_ptr<dealii::parallel::shared::Triangulation<dim>>
-      make_triangulation(MPI_Comm comm);
 
       /// Build the run of a PDLSM-FEM model (pdlsm_fem_scene.cc).
       template <int dim>

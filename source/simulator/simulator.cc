@@ -29,6 +29,18 @@ namespace pdfem
   template <int dim>
   RunSetup<dim>::~RunSetup() = default;
 
+  template <int dim>
+  parallel::shared::Triangulation<dim> &
+  RunSetup<dim>::create_triangulation(MPI_Comm comm)
+  {
+    tria = std::make_unique<parallel::shared::Triangulation<dim>>(
+      comm,
+      Triangulation<dim>::none,
+      false,
+      parallel::shared::Triangulation<dim>::partition_metis);
+    return *tria;
+  }
+
   // ------------------------------------------------------------------ Impl
   template <int dim>
   Simulator<dim>::Impl::Impl(const Simulator<dim> &owner,

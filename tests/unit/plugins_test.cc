@@ -169,16 +169,12 @@ namespace
     setup.out_dir =
       (std::filesystem::temp_directory_path() / "pdfem_plugins_test").string();
     std::filesystem::remove_all(setup.out_dir);
-    setup.tria = std::make_unique<dealii::parallel::shared::Triangulation<2>>(
-      comm,
-      dealii::Triangulation<2>::none,
-      false,
-      dealii::parallel::shared::Triangulation<2>::partition_metis);
-    dealii::GridGenerator::subdivided_hyper_rectangle(*setup.tria,
-                                                      {8, 2},
-                                                      dealii::Point<2>(0, 0),
-                                                      dealii::Point<2>(4, 1),
-                                                      true);
+    dealii::GridGenerator::subdivided_hyper_rectangle(
+      setup.create_triangulation(comm),
+      {8, 2},
+      dealii::Point<2>(0, 0),
+      dealii::Point<2>(4, 1),
+      true);
     auto &s                          = setup.settings;
     s.material.youngs_modulus        = 1e9;
     s.material.poissons_ratio        = 0.;

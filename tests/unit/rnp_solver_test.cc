@@ -61,8 +61,8 @@ namespace
   BarResult
   solve_bar(const double h, const double C)
   {
-    Bar                bar(h, C, 40.);
-    RNPSystem<1>       system(bar.x, bar.V, bar.s, {}, bar.loads);
+    Bar               bar(h, C, 40.);
+    RNPSystem<1>      system(bar.x, bar.V, bar.s, {}, bar.loads);
     Drivers::Settings settings;
     settings.type               = "newton";
     settings.load_steps         = 1;
@@ -104,8 +104,8 @@ namespace
     // specs/001 A7: the last stable load of the h = 0.5 bar is 598.9. Load
     // to 1000 in 10 steps, cuts by 1/4: the run must stop 'unstable' with
     // the limit load between the last stable and the failed load.
-    Bar                bar(0.5, 4000., 1000.);
-    RNPSystem<1>       system(bar.x, bar.V, bar.s, {}, bar.loads);
+    Bar               bar(0.5, 4000., 1000.);
+    RNPSystem<1>      system(bar.x, bar.V, bar.s, {}, bar.loads);
     Drivers::Settings settings;
     settings.type               = "newton";
     settings.load_steps         = 10;
@@ -152,7 +152,7 @@ namespace
       u[0]     = 0.;
       u[n - 1] = 4. * t;
     };
-    RNPSystem<1>       system(bar.x, bar.V, bar.s, {}, bar.loads);
+    RNPSystem<1>      system(bar.x, bar.V, bar.s, {}, bar.loads);
     Drivers::Settings settings;
     settings.type               = "newton";
     settings.load_steps         = 20;
@@ -269,8 +269,8 @@ namespace
     // and comes down on the softening branch, whose states are unstable
     // (measured: 598.2 at step 14, then 582, 484, 361, ... down to 2.4 at
     // step 30 with the end displacement still growing).
-    Bar                bar(0.5, 4000., 1000.);
-    RNPSystem<1>       system(bar.x, bar.V, bar.s, {}, bar.loads);
+    Bar               bar(0.5, 4000., 1000.);
+    RNPSystem<1>      system(bar.x, bar.V, bar.s, {}, bar.loads);
     Drivers::Settings settings;
     settings.type               = "newton";
     settings.load_steps         = 20;

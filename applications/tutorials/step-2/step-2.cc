@@ -306,12 +306,7 @@ namespace Step2
     setup.name    = "step-2";
     setup.out_dir = "output-step-2";
 
-    setup.tria = std::make_unique<parallel::shared::Triangulation<2>>(
-      comm,
-      Triangulation<2>::none,
-      false,
-      parallel::shared::Triangulation<2>::partition_metis);
-    GridGenerator::subdivided_hyper_rectangle(*setup.tria,
+    GridGenerator::subdivided_hyper_rectangle(setup.create_triangulation(comm),
                                               {40, 41},
                                               Point<2>(-0.5, -0.5),
                                               Point<2>(0.5, 0.5),

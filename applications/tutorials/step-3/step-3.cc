@@ -244,12 +244,7 @@ namespace Step3
     setup.name    = "step-3";
     setup.out_dir = "output-step-3";
 
-    setup.tria = std::make_unique<parallel::shared::Triangulation<2>>(
-      comm,
-      Triangulation<2>::none,
-      false,
-      parallel::shared::Triangulation<2>::partition_metis);
-    GridGenerator::subdivided_hyper_rectangle(*setup.tria,
+    GridGenerator::subdivided_hyper_rectangle(setup.create_triangulation(comm),
                                               {80, 20},
                                               Point<2>(-0.5, -0.125),
                                               Point<2>(0.5, 0.125),

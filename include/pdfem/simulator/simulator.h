@@ -39,6 +39,12 @@ namespace pdfem
     operator=(RunSetup &&) noexcept;
     ~RunSetup();
 
+    /// Make @p tria an empty mesh shared by the ranks of @p comm and
+    /// partitioned by METIS (how every pdfem run holds its mesh), to be
+    /// filled by Mesh::read_msh() or a deal.II GridGenerator; returns it.
+    dealii::parallel::shared::Triangulation<dim, dim> &
+    create_triangulation(MPI_Comm comm);
+
     /// The input file (messages, summary.json) and its stem.
     std::string file;
     std::string name;
