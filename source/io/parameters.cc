@@ -3,7 +3,6 @@
 #include <pdfem/base/parameter_tools.h>
 #include <pdfem/io/parameters.h>
 
-#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
@@ -11,7 +10,6 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
-#include <sstream>
 
 namespace pdfem
 {

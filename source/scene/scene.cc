@@ -395,38 +395,6 @@ namespace pdfem
 
     namespace
     {
-      /// The driver and criterion of @p prm, checked against each other and
-      /// the scene before any work (InputError).
-      template <int dim>
-      std::pair<std::unique_ptr<Drivers::Interface>,
-                std::unique_ptr<Fracture::Criterion<dim>>>
-      make_plugins(const std::string        &file,
-                   const Drivers::Settings  &driver_settings,
-                   const Fracture::Settings &fracture,
-                   const std::string        &model_name,
-                   const bool                nonlinear_model,
-                   const double              density,
-                   const Solvers::Settings  &linear_solver)
-      {
-        auto driver = Drivers::create(driver_settings.type, file);
-        driver->initialize(driver_settings, file, dim);
-        auto criterion =
-          Fracture::create_criterion<dim>(fracture.criterion, file);
-        if (criterion)
-          criterion->initialize(fracture, file);
-        check_plugins<dim>(*driver,
-                           criterion.get(),
-                           make_run_traits(file,
-                                           dim,
-                                           model_name,
-                                           nonlinear_model,
-                                           density,
-                                           linear_solver,
-                                           driver_settings.type),
-                           fracture);
-        return {std::move(driver), std::move(criterion)};
-      }
-
       /// A PDLSM-FEM command file (and the .lis mesh it names).
       template <int dim>
       int
@@ -445,10 +413,7 @@ namespace pdfem
                                          false,
                                          setup.settings.material.density,
                                          setup.settings.linear_solver);
-        Simulator<dim> simulator(std::move(setup),
-                                 comm,
-                                 std::move(plugins.first),
-                                 std::move(plugins.second));
+        Simulator<dim> simulator(std::move(setup), comm, std::move(plugins));
         simulator.set_quiet(options.quiet);
         return simulator.run();
       }
@@ -476,10 +441,7 @@ namespace pdfem
         setup_from_prm<dim>(prm, options, comm, setup);
         if (rnp)
           return internal::execute_rnp<dim>(setup, prm, options, comm);
-        Simulator<dim> simulator(std::move(setup),
-                                 comm,
-                                 std::move(plugins.first),
-                                 std::move(plugins.second));
+        Simulator<dim> simulator(std::move(setup), comm, std::move(plugins));
         simulator.set_quiet(options.quiet);
         return simulator.run();
       }

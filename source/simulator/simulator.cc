@@ -101,19 +101,33 @@ namespace pdfem
   }
 
   template <int dim>
-  void
-  Simulator<dim>::Impl::check_plugins() const
+  RunPlugins<dim>
+  make_plugins(const std::string        &file,
+               const Drivers::Settings  &driver_settings,
+               const Fracture::Settings &fracture,
+               const std::string        &model_name,
+               const bool                nonlinear_model,
+               const double              density,
+               const Solvers::Settings  &linear_solver)
   {
-    pdfem::check_plugins<dim>(*driver,
-                              criterion.get(),
-                              make_run_traits(setup.file,
-                                              dim,
-                                              "pdlsm",
-                                              false,
-                                              setup.settings.material.density,
-                                              setup.settings.linear_solver,
-                                              setup.driver.type),
-                              setup.fracture);
+    RunPlugins<dim> plugins;
+    plugins.driver = Drivers::create(driver_settings.type, file);
+    plugins.driver->initialize(driver_settings, file, dim);
+    plugins.criterion =
+      Fracture::create_criterion<dim>(fracture.criterion, file);
+    if (plugins.criterion)
+      plugins.criterion->initialize(fracture, file);
+    check_plugins<dim>(*plugins.driver,
+                       plugins.criterion.get(),
+                       make_run_traits(file,
+                                       dim,
+                                       model_name,
+                                       nonlinear_model,
+                                       density,
+                                       linear_solver,
+                                       driver_settings.type),
+                       fracture);
+    return plugins;
   }
 
   template <int dim>
@@ -350,10 +364,9 @@ namespace pdfem
 
   // ------------------------------------------------------------ Simulator
   template <int dim>
-  Simulator<dim>::Simulator(RunSetup<dim>                           &&setup,
-                            MPI_Comm                                  comm,
-                            std::unique_ptr<Drivers::Interface>       driver,
-                            std::unique_ptr<Fracture::Criterion<dim>> criterion)
+  Simulator<dim>::Simulator(RunSetup<dim> &&setup,
+                            MPI_Comm        comm,
+                            RunPlugins<dim> plugins)
     : impl(std::make_unique<Impl>(*this, std::move(setup), comm))
   {
     Impl &s = *impl;
@@ -382,19 +395,19 @@ namespace pdfem
                        "Output/Directory",
                        folder_error,
                        "a writable folder");
-    s.driver = driver ? std::move(driver) :
-                        Drivers::create(s.setup.driver.type, s.setup.file);
-    s.driver->initialize(s.setup.driver, s.setup.file, dim);
+    if (!plugins.driver)
+      plugins = make_plugins<dim>(s.setup.file,
+                                  s.setup.driver,
+                                  s.setup.fracture,
+                                  "pdlsm",
+                                  false,
+                                  s.setup.settings.material.density,
+                                  s.setup.settings.linear_solver);
+    s.driver    = std::move(plugins.driver);
+    s.criterion = std::move(plugins.criterion);
     // The driver's validated parameters (time step, monitor points parsed)
     // are the run's.
     s.setup.driver = s.driver->settings();
-    s.criterion    = criterion ?
-                       std::move(criterion) :
-                       Fracture::create_criterion<dim>(s.setup.fracture.criterion,
-                                                    s.setup.file);
-    if (s.criterion)
-      s.criterion->initialize(s.setup.fracture, s.setup.file);
-    s.check_plugins();
   }
 
   template <int dim>
@@ -553,10 +566,17 @@ namespace pdfem
     return impl->assessment;
   }
 
-#define INSTANTIATE(dim)                                             \
-  template struct RunSetup<dim>;                                     \
-  template class Simulator<dim>;                                     \
-  template void check_plugins<dim>(const Drivers::Interface &,       \
+#define INSTANTIATE(dim)                                                        \
+  template struct RunSetup<dim>;                                                \
+  template class Simulator<dim>;                                                \
+  template RunPlugins<dim> make_plugins<dim>(const std::string &,               \
+                                             const Drivers::Settings &,         \
+                                             const Fracture::Settings &,        \
+                                             const std::string &,               \
+                                             bool,                              \
+                                             double,                            \
+                                             const Solvers::Settings &);        \
+  template void            check_plugins<dim>(const Drivers::Interface &,       \
                                    const Fracture::Criterion<dim> *, \
                                    const Drivers::RunTraits &,       \
                                    const Fracture::Settings &);

@@ -86,9 +86,6 @@ namespace pdfem
     record_time_step(const Drivers::DynamicRecord &record) override;
 
     // ---- the run (simulator.cc)
-    /// Check that driver, criterion and set-up fit (InputError).
-    void
-    check_plugins() const;
     /// The coupled system, the cracks, the postprocessors, the history.
     void
     set_up();

@@ -104,6 +104,31 @@ namespace pdfem
                 const Drivers::RunTraits       &traits,
                 const Fracture::Settings       &fracture);
 
+  /** The driver and the criterion (nullptr: none) of a run. */
+  template <int dim>
+  struct RunPlugins
+  {
+    std::unique_ptr<Drivers::Interface>       driver;
+    std::unique_ptr<Fracture::Criterion<dim>> criterion;
+  };
+
+  /**
+   * The driver and criterion named in @p driver_settings (`type`) and
+   * @p fracture (`criterion`), made from the registries, given their
+   * parameters and checked together with the rest of the run
+   * (make_run_traits(), check_plugins()). Throws InputError: a scene calls
+   * it before reading its mesh, so that bad input stops before any work.
+   */
+  template <int dim>
+  RunPlugins<dim>
+  make_plugins(const std::string        &file,
+               const Drivers::Settings  &driver_settings,
+               const Fracture::Settings &fracture,
+               const std::string        &model_name,
+               bool                      nonlinear_model,
+               double                    density,
+               const Solvers::Settings  &linear_solver);
+
   /**
    * One run of the coupled PD-FE method (in the spirit of ASPECT's
    * Simulator): it owns the mesh and regions, the coupled system, the
@@ -126,14 +151,14 @@ namespace pdfem
   {
   public:
     /**
-     * A run of @p setup on @p comm. The driver and the criterion are made
-     * from the names in the set-up unless given (a program's own). Checks
-     * that they fit together (InputError otherwise).
+     * A run of @p setup on @p comm with @p plugins as make_plugins() gives
+     * them (made, given their parameters and checked); without a driver,
+     * make_plugins() is called here with the names in the set-up (the
+     * PDLSM model). Throws InputError.
      */
-    Simulator(RunSetup<dim>                           &&setup,
-              MPI_Comm                                  comm,
-              std::unique_ptr<Drivers::Interface>       driver    = nullptr,
-              std::unique_ptr<Fracture::Criterion<dim>> criterion = nullptr);
+    Simulator(RunSetup<dim> &&setup,
+              MPI_Comm        comm,
+              RunPlugins<dim> plugins = {});
     ~Simulator();
 
     /// Add a postprocessor (besides every registered one).
