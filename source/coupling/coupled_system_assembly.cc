@@ -341,47 +341,40 @@ namespace pdfem
             row, cols.size(), cols.data(), values.data(), false, false);
         }
 
-      // PD rows: the blocks of apply_pd, owner first.
+      // PD rows: the model's tangent row of each owner, at the state of the
+      // last residual (nonlinear models) — its own block first.
+      const PDModels::NodalField<dim> field =
+        nodal_field(model->linear() ? u_ghosted : u_tangent);
       std::vector<global_dof_index> rows(dim);
       std::vector<double>           K;
+      std::vector<Tensor<2, dim>>   blocks;
       for (std::size_t o = 0; o < families.owners.size(); ++o)
         {
           if (decoupled[o])
             continue;
-          const unsigned int k        = families.owners[o];
-          std::size_t        n_intact = 0;
-          for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
-               ++j)
-            n_intact += families.intact[j];
-          const std::size_t n_cols = dim * (n_intact + 1);
+          const unsigned int k = families.owners[o];
+          model->tangent_row(o, field, blocks);
+          const std::size_t n_cols = dim * blocks.size();
           K.assign(dim * n_cols, 0.);
           cols.resize(n_cols);
-          auto add_block = [&](const std::size_t     block,
-                               const Tensor<2, dim> &B,
-                               const double          factor) {
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
-                K[i * n_cols + dim * block + j] += factor * B[i][j];
-          };
-          const Tensor<1, dim> s        = boundary_area[k];
-          const bool           boundary = s.norm_square() > 0.;
-          std::size_t          block    = 0;
           for (unsigned int c = 0; c < dim; ++c)
             rows[c] = cols[c] = node_dof[k][c];
+          std::size_t block = 0;
           for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
                ++j)
-            {
-              if (!families.intact[j])
-                continue;
-              ++block;
-              Tensor<2, dim> B = bond_block[j];
-              if (boundary)
-                B += pdlsm.traction_block(s, weight_a[j]);
-              add_block(block, B, 1.);
-              add_block(0, B, -1.);
-              for (unsigned int c = 0; c < dim; ++c)
-                cols[dim * block + c] = node_dof[families.members[j]][c];
-            }
+            if (families.intact[j])
+              {
+                ++block;
+                for (unsigned int c = 0; c < dim; ++c)
+                  cols[dim * block + c] = node_dof[families.members[j]][c];
+              }
+          AssertThrow(block + 1 == blocks.size(),
+                      ExcMessage("a PD model's tangent row must have one "
+                                 "block per intact bond and its own"));
+          for (std::size_t b = 0; b < blocks.size(); ++b)
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                K[i * n_cols + dim * b + j] = blocks[b][i][j];
           add_to_matrix(matrix, rows, cols, K);
         }
       add_held_diagonal(matrix);
@@ -520,6 +513,8 @@ namespace pdfem
       s.assemble_external(t);
       // Assembled on demand: the last residual of a step only checks.
       s.tangent_stale = assemble_tangent && !s.matrix_free;
+      if (s.tangent_stale && !s.model->linear())
+        s.u_tangent = s.u_ghosted;
 
       // Reactions: the force the supports exert, f_int - f_ext, summed over
       // each set's nodes (every component), for the 2D thickness.

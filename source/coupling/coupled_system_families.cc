@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// CoupledSystem: the PD boundary, the families, their PDLSM weights and the
-// crack faces (refits, crack-face area, decoupled nodes).
+// CoupledSystem: the PD boundary, the families (the PD model's set-up) and
+// the crack faces (cut bonds, crack-face area, decoupled nodes).
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
 
@@ -74,56 +74,45 @@ namespace pdfem
       for (std::size_t o = 0; o < families.owners.size(); ++o)
         family_of[families.owners[o]] = o;
 
-      // Every family must carry the second-order fit: if one cannot, the
-      // horizon is too small for the mesh (or the weight too narrow).
-      const unsigned int n_bad       = compute_weights();
-      const unsigned int n_bad_total = Utilities::MPI::sum(n_bad, comm);
-      if (n_bad_total > 0)
-        {
-          std::ostringstream where;
-          for (std::size_t o = 0; o < families.owners.size() && n_bad > 0; ++o)
-            if (families.offsets[o + 1] > families.offsets[o] &&
-                bond_block[families.offsets[o]].norm() == 0.)
-              {
-                where << " (e.g. the node at (" << x[families.owners[o]]
-                      << ") with "
-                      << families.offsets[o + 1] - families.offsets[o]
-                      << " members)";
-                break;
-              }
-          throw InputError(
-            settings.source_file,
-            "Peridynamics/Horizon factor",
-            std::to_string(n_bad_total) +
-              " PD node(s) have too few effective family members for the "
-              "second-order PDLSM fit with m = " +
-              number(settings.horizon_factor) +
-              ", a = " + number(settings.weight_factor) + where.str(),
-            "a larger Horizon factor or Weight factor (m >= 3 with a >= "
-            "0.25 is safe on quads and hexes)");
-        }
+      // The model's per-bond data over the whole initial families.
+      region.comm           = comm;
+      region.position       = &x;
+      region.volume         = &volume;
+      region.pd_volume      = &pd_volume;
+      region.horizon        = &horizon;
+      region.has_fe_cells   = &is_fe;
+      region.boundary_area  = &boundary_area;
+      region.families       = &families;
+      region.lambda         = settings.material.lambda();
+      region.mu             = settings.material.mu();
+      region.youngs_modulus = settings.material.youngs_modulus;
+      region.poissons_ratio = settings.material.poissons_ratio;
+      region.plane_strain   = dim == 2 && !settings.material.plane_stress;
+      region.source_file    = settings.source_file;
+      model->initialize(region);
 
       // Bonds crossing a pre-existing crack are cut for good.
+      std::vector<std::size_t> cut_families;
       if (!settings.cracks.empty())
         for (std::size_t o = 0; o < families.owners.size(); ++o)
-          for (std::size_t b = families.offsets[o]; b < families.offsets[o + 1];
-               ++b)
-            if (Mesh::cut_by_any(settings.cracks,
-                                 x[families.owners[o]],
-                                 x[families.members[b]]))
-              families.intact[b] = 0;
-      if (settings.free_crack_faces && !settings.cracks.empty())
-        {
-          std::vector<std::size_t> cut_families;
-          for (std::size_t o = 0; o < families.owners.size(); ++o)
-            if (std::any_of(families.intact.begin() + families.offsets[o],
-                            families.intact.begin() + families.offsets[o + 1],
-                            [](const std::uint8_t i) { return i == 0; }))
+          {
+            bool cut = false;
+            for (std::size_t b = families.offsets[o];
+                 b < families.offsets[o + 1];
+                 ++b)
+              if (Mesh::cut_by_any(settings.cracks,
+                                   x[families.owners[o]],
+                                   x[families.members[b]]))
+                {
+                  families.intact[b] = 0;
+                  cut                = true;
+                }
+            if (cut)
               cut_families.push_back(o);
-          refit_families(cut_families);
-          add_crack_face_area(settings.cracks);
-        }
-      zero_broken_bond_blocks();
+          }
+      model->bonds_changed(cut_families, settings.free_crack_faces);
+      if (settings.free_crack_faces && !settings.cracks.empty())
+        add_crack_face_area(settings.cracks);
       update_decoupled();
 
       // Ghosts: every DoF of a family member or of a vertex of an owned
@@ -160,94 +149,6 @@ namespace pdfem
             owned_lid[k][c] =
               owned.is_element(dof) ? owned.index_within_set(dof) : invalid;
           }
-    }
-
-    template <int dim>
-    SymmetricTensor<2, dim>
-    CoupledSystem<dim>::Impl::make_bond_block(
-      const unsigned int             k,
-      const SymmetricTensor<2, dim> &b) const
-    {
-      return -pd_volume[k] * symmetrize(pdlsm.divergence_block(b));
-    }
-
-    template <int dim>
-    void
-    CoupledSystem<dim>::Impl::zero_broken_bond_blocks()
-    {
-      for (std::size_t j = 0; j < families.n_bonds(); ++j)
-        if (!families.intact[j])
-          bond_block[j] = SymmetricTensor<2, dim>();
-    }
-
-    template <int dim>
-    unsigned int
-    CoupledSystem<dim>::Impl::compute_weights()
-    {
-      weight_a.assign(families.n_bonds(), Tensor<1, dim>());
-      bond_block.assign(families.n_bonds(), SymmetricTensor<2, dim>());
-      std::vector<Tensor<1, dim>>          xi, a;
-      std::vector<double>                  vol;
-      std::vector<SymmetricTensor<2, dim>> b;
-      unsigned int                         n_failed = 0;
-      for (std::size_t o = 0; o < families.owners.size(); ++o)
-        {
-          const unsigned int k     = families.owners[o];
-          const std::size_t  first = families.offsets[o];
-          const std::size_t  last  = families.offsets[o + 1];
-          xi.clear();
-          vol.clear();
-          for (std::size_t j = first; j < last; ++j)
-            {
-              xi.push_back(x[families.members[j]] - x[k]);
-              vol.push_back(volume[families.members[j]]);
-            }
-          if (!pdlsm.compute_weights(xi, vol, horizon[k], a, b))
-            {
-              ++n_failed; // its weights stay zero
-              continue;
-            }
-          std::copy(a.begin(), a.end(), weight_a.begin() + first);
-          for (std::size_t i = 0; i < b.size(); ++i)
-            bond_block[first + i] = make_bond_block(k, b[i]);
-        }
-      return n_failed;
-    }
-
-    template <int dim>
-    void
-    CoupledSystem<dim>::Impl::refit_families(
-      const std::vector<std::size_t> &family_indices)
-    {
-      // The fit over the intact bonds alone: at a crack face the family is
-      // one-sided, as at an outer boundary. A family too small for the
-      // second-order fit keeps the weights of its whole family.
-      std::vector<Tensor<1, dim>>          xi, a;
-      std::vector<double>                  vol;
-      std::vector<SymmetricTensor<2, dim>> b;
-      std::vector<std::size_t>             bond;
-      for (const std::size_t o : family_indices)
-        {
-          const unsigned int k = families.owners[o];
-          xi.clear();
-          vol.clear();
-          bond.clear();
-          for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
-               ++j)
-            if (families.intact[j])
-              {
-                xi.push_back(x[families.members[j]] - x[k]);
-                vol.push_back(volume[families.members[j]]);
-                bond.push_back(j);
-              }
-          if (!pdlsm.compute_weights(xi, vol, horizon[k], a, b))
-            continue;
-          for (std::size_t i = 0; i < bond.size(); ++i)
-            {
-              weight_a[bond[i]]   = a[i];
-              bond_block[bond[i]] = make_bond_block(k, b[i]);
-            }
-        }
     }
 
     template <int dim>
@@ -343,17 +244,11 @@ namespace pdfem
                        [](const std::uint8_t i) { return i != 0; });
     }
 
-#define INSTANTIATE(dim)                                                         \
-  template void                    CoupledSystem<dim>::Impl::make_pd_boundary(); \
-  template void                    CoupledSystem<dim>::Impl::make_families();    \
-  template SymmetricTensor<2, dim> CoupledSystem<dim>::Impl::make_bond_block(    \
-    unsigned int, const SymmetricTensor<2, dim> &) const;                        \
-  template void         CoupledSystem<dim>::Impl::zero_broken_bond_blocks();     \
-  template unsigned int CoupledSystem<dim>::Impl::compute_weights();             \
-  template void         CoupledSystem<dim>::Impl::refit_families(                \
-    const std::vector<std::size_t> &);                                   \
-  template void CoupledSystem<dim>::Impl::add_crack_face_area(                   \
-    const std::vector<Mesh::Crack<dim>> &);                                      \
+#define INSTANTIATE(dim)                                       \
+  template void CoupledSystem<dim>::Impl::make_pd_boundary();  \
+  template void CoupledSystem<dim>::Impl::make_families();     \
+  template void CoupledSystem<dim>::Impl::add_crack_face_area( \
+    const std::vector<Mesh::Crack<dim>> &);                    \
   template void CoupledSystem<dim>::Impl::update_decoupled();
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

@@ -17,9 +17,11 @@ namespace pdfem
 
     template <int dim>
     void
-    CoupledSystem<dim>::Impl::bonds_changed()
+    CoupledSystem<dim>::Impl::bonds_changed(
+      const std::vector<std::size_t> &changed,
+      const bool                      free_surfaces)
     {
-      zero_broken_bond_blocks();
+      model->bonds_changed(changed, free_surfaces);
       update_decoupled();
       update_held();
       block_inverse.clear(); // rebuilt by the next solve
@@ -84,15 +86,10 @@ namespace pdfem
                 cut_families.push_back(o);
             }
           if (s.settings.free_crack_faces)
-            {
-              s.refit_families(cut_families);
-              s.add_crack_face_area(cracks);
-            }
-        }
-      n = Utilities::MPI::sum(n, s.comm);
-      if (n > 0)
-        {
-          s.bonds_changed();
+            s.add_crack_face_area(cracks);
+          n = Utilities::MPI::sum(n, s.comm);
+          if (n > 0)
+            s.bonds_changed(cut_families, s.settings.free_crack_faces);
         }
       return n;
     }
@@ -102,27 +99,30 @@ namespace pdfem
     CoupledSystem<dim>::break_bonds_if(
       const std::function<bool(unsigned int, unsigned int)> &breaks)
     {
-      Impl         &s = *impl;
-      PD::Families &f = s.families;
-      unsigned long n = 0;
+      Impl                    &s = *impl;
+      PD::Families            &f = s.families;
+      unsigned long            n = 0;
+      std::vector<std::size_t> changed;
       for (std::size_t o = 0; o < f.owners.size(); ++o)
         {
           const unsigned int k = f.owners[o];
           if (s.no_fail[k])
             continue;
+          bool lost = false;
           for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
             if (f.intact[b] && !s.no_fail[f.members[b]] &&
                 breaks(k, f.members[b]))
               {
                 f.intact[b] = 0;
                 ++n;
+                lost = true;
               }
+          if (lost)
+            changed.push_back(o);
         }
       n = Utilities::MPI::sum(n, s.comm);
       if (n > 0)
-        {
-          s.bonds_changed();
-        }
+        s.bonds_changed(changed, false);
       return n;
     }
 
@@ -203,16 +203,26 @@ namespace pdfem
       return pieces;
     }
 
-#define INSTANTIATE(dim)                                                      \
-  template void          CoupledSystem<dim>::Impl::bonds_changed();           \
-  template unsigned long CoupledSystem<dim>::break_bonds(                     \
-    const std::vector<Mesh::Crack<dim>> &);                                   \
-  template unsigned long CoupledSystem<dim>::break_bonds_if(                  \
-    const std::function<bool(unsigned int, unsigned int)> &);                 \
-  template const std::vector<double> &CoupledSystem<dim>::horizons() const;   \
-  template const PD::Families        &CoupledSystem<dim>::families() const;   \
-  template unsigned int CoupledSystem<dim>::count_pieces(unsigned int) const; \
-  template const TrilinosWrappers::SparseMatrix &                             \
+    template <int dim>
+    const PDModels::Interface<dim> &
+    CoupledSystem<dim>::pd_model() const
+    {
+      return *impl->model;
+    }
+
+#define INSTANTIATE(dim)                                                         \
+  template void CoupledSystem<dim>::Impl::bonds_changed(                         \
+    const std::vector<std::size_t> &, bool);                                     \
+  template unsigned long CoupledSystem<dim>::break_bonds(                        \
+    const std::vector<Mesh::Crack<dim>> &);                                      \
+  template unsigned long CoupledSystem<dim>::break_bonds_if(                     \
+    const std::function<bool(unsigned int, unsigned int)> &);                    \
+  template const std::vector<double>      &CoupledSystem<dim>::horizons() const; \
+  template const PD::Families             &CoupledSystem<dim>::families() const; \
+  template const PDModels::Interface<dim> &CoupledSystem<dim>::pd_model()        \
+    const;                                                                       \
+  template unsigned int CoupledSystem<dim>::count_pieces(unsigned int) const;    \
+  template const TrilinosWrappers::SparseMatrix &                                \
   CoupledSystem<dim>::preconditioner_matrix();
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

@@ -5,7 +5,7 @@
 
 #include <pdfem/coupling/coupled_system.h>
 #include <pdfem/pd/families.h>
-#include <pdfem/pd_models/pdlsm.h>
+#include <pdfem/pd_models/interface.h>
 #include <pdfem/solvers/linear_solver.h>
 
 #include <deal.II/base/function_parser.h>
@@ -112,20 +112,19 @@ namespace pdfem
       for_each_pd_chunk(
         const std::function<void()>                         &caller_first,
         const std::function<void(std::size_t, std::size_t)> &owners) const;
-      /// After bonds broke (or families were refitted): the broken bonds'
-      /// blocks are zeroed, decoupled and held DoFs listed again; the
-      /// block-Jacobi inverse and the auxiliary matrix are rebuilt by the
-      /// next solve.
+      /// After bonds of the families @p changed broke: the model updates
+      /// its bond data (refits them with @p free_surfaces), decoupled and
+      /// held DoFs are listed again; the block-Jacobi inverse and the
+      /// auxiliary matrix are rebuilt by the next solve.
       void
-      bonds_changed();
-      /// Zero the blocks of the broken bonds.
-      void
-      zero_broken_bond_blocks();
-      /// The bond block of owner @p k for the PDLSM weight @p b (see
-      /// bond_block).
-      dealii::SymmetricTensor<2, dim>
-      make_bond_block(unsigned int                           k,
-                      const dealii::SymmetricTensor<2, dim> &b) const;
+      bonds_changed(const std::vector<std::size_t> &changed,
+                    bool                            free_surfaces);
+      /// The field @p x (ghosted) as the model reads it.
+      PDModels::NodalField<dim>
+      nodal_field(const dealii::TrilinosWrappers::MPI::Vector &x) const
+      {
+        return {x.trilinos_vector()[0], relevant_lid.data()};
+      }
       /// Tractions and body force at load factor @p t, into f_ext.
       void
       assemble_external(double t);
@@ -174,21 +173,6 @@ namespace pdfem
       double
       held_diagonal(global_dof_index i) const;
 
-      /**
-       * PDLSM weights of every bond of the owned families (CSR like
-       * families.members), computed once over the whole initial family:
-       * the shape matrix belongs to it, and bond states enter only the sums
-       * (PDLSM-FEM, specs/004 §1.2). Refitting over the intact bonds alone
-       * would reproduce a uniform strain across a crack exactly, so that
-       * the crack would carry load. Returns the number of families that
-       * cannot carry the fit.
-       */
-      unsigned int
-      compute_weights();
-      /// Refit the listed families (indices into families.owners) over
-      /// their intact bonds (Settings::free_crack_faces).
-      void
-      refit_families(const std::vector<std::size_t> &family_indices);
       /// Add the crack faces' share to boundary_area (free_crack_faces, 2D).
       void
       add_crack_face_area(const std::vector<Mesh::Crack<dim>> &cracks);
@@ -225,7 +209,9 @@ namespace pdfem
       const dealii::parallel::shared::Triangulation<dim, dim> &tria;
       std::vector<bool>                                        cell_pd;
       Settings<dim>                                            settings;
-      PDModels::PDLSM<dim>                                     pdlsm;
+      /// The PD term (settings.pd_model, or pdlsm) and what it reads.
+      std::shared_ptr<PDModels::Interface<dim>> model;
+      PDModels::Region<dim>                     region;
 
       dealii::hp::FECollection<dim>      fe;        // FE_Q(1)^dim, P1^dim
       dealii::hp::FECollection<dim>      fe_scalar; // FE_Q(1), P1
@@ -262,12 +248,6 @@ namespace pdfem
       /// Local index of each DoF of a node in the ghosted (relevant) vectors
       /// and, for owned nodes, in the owned vectors.
       std::vector<std::array<unsigned int, dim>> relevant_lid, owned_lid;
-      std::vector<dealii::Tensor<1, dim>>        weight_a; // per bond
-      /// Per bond: -V_k G_m with G_m = (lambda + mu) b_m + mu tr(b_m) I, the
-      /// divergence block of the PDLSM weight b_m (the bond's coupling in
-      /// row k, specs/004 §1.2); zero once the bond is broken, so that the
-      /// kernel sums over all bonds without testing their states.
-      std::vector<dealii::SymmetricTensor<2, dim>> bond_block;
 
       // ----- boundary conditions
       std::vector<std::uint8_t> dof_fixed;     // all DoFs (replicated)
@@ -310,6 +290,8 @@ namespace pdfem
       };
       mutable std::vector<GhostImport>      ghost_imports;
       dealii::TrilinosWrappers::MPI::Vector f_int, f_ext, u_ghosted;
+      /// The displacement the tangent is assembled at (nonlinear models).
+      dealii::TrilinosWrappers::MPI::Vector u_tangent;
       Solvers::LinearSolver                 solver;
       double                                force_scale = 0.;
       bool tangent_stale = false; // residual() asked, solve_linear builds

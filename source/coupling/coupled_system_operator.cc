@@ -17,29 +17,6 @@ namespace pdfem
   {
     using namespace dealii;
 
-    namespace
-    {
-      /// y = b x for a symmetric tensor stored as deal.II's raw entries
-      /// (2D: 00, 11, 01; 3D: 00, 11, 22, 01, 02, 12).
-      template <int dim>
-      inline void
-      symmetric_product(const double *b, const double *x, double *y)
-      {
-        if constexpr (dim == 2)
-          {
-            y[0] = b[0] * x[0] + b[2] * x[1];
-            y[1] = b[2] * x[0] + b[1] * x[1];
-          }
-        else
-          {
-            y[0] = b[0] * x[0] + b[3] * x[1] + b[4] * x[2];
-            y[1] = b[3] * x[0] + b[1] * x[1] + b[5] * x[2];
-            y[2] = b[4] * x[0] + b[5] * x[1] + b[2] * x[2];
-          }
-      }
-
-    } // namespace
-
     template <int dim>
     void
     CoupledSystem<dim>::Impl::import_ghosts(
@@ -101,63 +78,15 @@ namespace pdfem
       const TrilinosWrappers::MPI::Vector &x,
       const std::function<void()>         &fe_product) const
     {
-      // Row k: sum_m -V_k G_m dx_m + sigma_k s_k, with -V_k G_m from
-      // bond_block (zero for broken bonds: no state tests) and
-      //   sigma_k = C : sym(sum_m dx_m (x) a_m) over the intact bonds
-      // (boundary nodes only), so the boundary term needs the gradient
-      // only, once per node. Raw local arrays: the ghosted x by
-      // relevant_lid. Each owner's sums run in the same order on any
-      // number of threads: the result is the same bit for bit.
-      static_assert(sizeof(SymmetricTensor<2, dim>) ==
-                      SymmetricTensor<2, dim>::n_independent_components *
-                        sizeof(double),
-                    "bond_block must be a packed array of doubles");
-      const double          *xv = x.trilinos_vector()[0];
-      constexpr unsigned int nb =
-        SymmetricTensor<2, dim>::n_independent_components;
-      const double *blocks =
-        bond_block.empty() ? nullptr : &bond_block[0].access_raw_entry(0);
+      // The model's rows, chunk by chunk on the threads; decoupled owners
+      // (held) get none.
+      const PDModels::NodalField<dim> field = nodal_field(x);
       const auto owners = [&](const std::size_t begin, const std::size_t end) {
+        model->forces(begin, end, field, pd_force.data());
         for (std::size_t o = begin; o < end; ++o)
-          {
-            double *f = &pd_force[dim * o];
-            if (decoupled[o])
-              {
-                for (unsigned int c = 0; c < dim; ++c)
-                  f[c] = 0.;
-                continue;
-              }
-            const unsigned int k = families.owners[o];
-            double             xk[dim], dx[dim], gdx[dim], sum[dim] = {};
+          if (decoupled[o])
             for (unsigned int c = 0; c < dim; ++c)
-              xk[c] = xv[relevant_lid[k][c]];
-            const Tensor<1, dim> s        = boundary_area[k];
-            const bool           boundary = s.norm_square() > 0.;
-            Tensor<2, dim>       grad_u;
-            for (std::size_t j = families.offsets[o];
-                 j < families.offsets[o + 1];
-                 ++j)
-              {
-                const auto &lid = relevant_lid[families.members[j]];
-                for (unsigned int c = 0; c < dim; ++c)
-                  dx[c] = xv[lid[c]] - xk[c];
-                symmetric_product<dim>(blocks + nb * j, dx, gdx);
-                for (unsigned int c = 0; c < dim; ++c)
-                  sum[c] += gdx[c];
-                if (boundary && families.intact[j])
-                  for (unsigned int c = 0; c < dim; ++c)
-                    for (unsigned int d = 0; d < dim; ++d)
-                      grad_u[c][d] += dx[c] * weight_a[j][d];
-              }
-            if (boundary)
-              {
-                const Tensor<1, dim> t = pdlsm.stress(grad_u) * s;
-                for (unsigned int c = 0; c < dim; ++c)
-                  sum[c] += t[c];
-              }
-            for (unsigned int c = 0; c < dim; ++c)
-              f[c] = sum[c];
-          }
+              pd_force[dim * o + c] = 0.;
       };
       for_each_pd_chunk(fe_product, owners);
     }
@@ -232,6 +161,8 @@ namespace pdfem
       // D_k = FE diagonal block + PD block d(row k)/d(u_k); held DoFs get
       // their diagonal entry alone.
       block_inverse.assign(owned_nodes.size(), Tensor<2, dim>());
+      const PDModels::NodalField<dim> field = nodal_field(u_ghosted);
+      std::vector<Tensor<2, dim>>     row;
       for (std::size_t n = 0; n < owned_nodes.size(); ++n)
         {
           const unsigned int k = owned_nodes[n];
@@ -242,16 +173,8 @@ namespace pdfem
           const std::size_t o = family_of[k];
           if (o < families.owners.size() && !decoupled[o])
             {
-              const Tensor<1, dim> s        = boundary_area[k];
-              const bool           boundary = s.norm_square() > 0.;
-              for (std::size_t j = families.offsets[o];
-                   j < families.offsets[o + 1];
-                   ++j)
-                {
-                  D -= Tensor<2, dim>(bond_block[j]); // zero if broken
-                  if (boundary && families.intact[j])
-                    D -= pdlsm.traction_block(s, weight_a[j]);
-                }
+              model->tangent_row(o, field, row);
+              D += row[0];
             }
           for (unsigned int i = 0; i < dim; ++i)
             if (dof_fixed[node_dof[k][i]] ||

@@ -52,37 +52,19 @@ namespace pdfem
         count[k] += 1.;
       };
 
-      // PD nodes: grad u = sum_m (u_m - u_k) (x) a_m over the intact bonds,
-      // the nonlocal stress C : sym(grad u); damage = the fraction of
-      // broken bonds. Each owner's gradient is kept apart and added below,
-      // so that the threads never write the same node.
-      const std::size_t           n_owners = s.families.owners.size();
-      std::vector<Tensor<2, dim>> owner_gradient(n_owners);
-      const auto                  pd_owners = [&](const std::size_t first_owner,
-                                 const std::size_t last_owner) {
-        for (std::size_t o = first_owner; o < last_owner; ++o)
+      // PD nodes: the model's nonlocal gradient, the stress C : sym(grad u)
+      // and its damage (by default the fraction of broken bonds). Each
+      // owner's gradient is kept apart and added below, so that the threads
+      // never write the same node.
+      const std::size_t               n_owners = s.families.owners.size();
+      std::vector<Tensor<2, dim>>     owner_gradient(n_owners);
+      const PDModels::NodalField<dim> field     = s.nodal_field(s.u_ghosted);
+      const auto                      pd_owners = [&](const std::size_t first,
+                                 const std::size_t last) {
+        for (std::size_t o = first; o < last; ++o)
           {
-            const unsigned int k     = s.families.owners[o];
-            const std::size_t  first = s.families.offsets[o];
-            const std::size_t  last = s.families.offsets[o + 1];
-            std::size_t        n_intact = 0;
-            Tensor<2, dim>     grad_u;
-            for (std::size_t j = first; j < last; ++j)
-              {
-                if (!s.families.intact[j])
-                  continue;
-                ++n_intact;
-                const unsigned int m = s.families.members[j];
-                for (unsigned int c = 0; c < dim; ++c)
-                  {
-                    const double du = u_at(m, c) - u_at(k, c);
-                    for (unsigned int d = 0; d < dim; ++d)
-                      grad_u[c][d] += du * s.weight_a[j][d];
-                  }
-              }
-            damage[k] =
-              last > first ? 1. - double(n_intact) / (last - first) : 0.;
-            owner_gradient[o] = grad_u;
+            damage[s.families.owners[o]] = s.model->damage(o, field);
+            owner_gradient[o] = s.model->displacement_gradient(o, field);
           }
       };
 
@@ -126,9 +108,13 @@ namespace pdfem
       s.for_each_pd_chunk(fe_cells, pd_owners);
       for (std::size_t o = 0; o < n_owners; ++o)
         if (!s.decoupled[o])
-          add_stress(s.families.owners[o],
-                     s.pdlsm.stress(owner_gradient[o]),
-                     owner_gradient[o]);
+          {
+            const SymmetricTensor<2, dim> eps = symmetrize(owner_gradient[o]);
+            add_stress(s.families.owners[o],
+                       lambda * trace(eps) * unit_symmetric_tensor<dim>() +
+                         2. * mu * eps,
+                       owner_gradient[o]);
+          }
 
       Utilities::MPI::sum(disp, s.comm, disp);
       Utilities::MPI::sum(stress, s.comm, stress);

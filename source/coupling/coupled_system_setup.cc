@@ -45,9 +45,10 @@ namespace pdfem
       , tria(tria)
       , cell_pd(cell_is_pd)
       , settings(settings)
-      , pdlsm(settings.material.lambda(),
-              settings.material.mu(),
-              settings.weight_factor)
+      , model(settings.pd_model ?
+                settings.pd_model :
+                std::shared_ptr<PDModels::Interface<dim>>(
+                  PDModels::make_pdlsm<dim>(settings.weight_factor)))
       , dofs(tria)
       , node_dofs_handler(tria)
       , solver(settings.linear_solver)
@@ -172,6 +173,12 @@ namespace pdfem
     {
       matrix_free = settings.linear_solver.type == "gmres" &&
                     settings.linear_solver.preconditioner == "amg fe";
+      if (matrix_free && !model->linear())
+        throw InputError(settings.source_file,
+                         "Linear solver/Preconditioner",
+                         "'amg fe' solves without the assembled tangent, "
+                         "which a nonlinear PD model needs",
+                         "amg, ilu, or Linear solver/Type = direct");
 
       // Cell patterns: FE cells only (f_int, tangent), or every cell ("amg
       // fe"); every owned row has its diagonal (held DoFs).
@@ -235,6 +242,7 @@ namespace pdfem
       f_int.reinit(owned, relevant, comm, true);
       f_ext.reinit(owned, relevant, comm, true);
       u_ghosted.reinit(owned, relevant, comm);
+      u_tangent.reinit(owned, relevant, comm);
       x_ghosted.reinit(owned, relevant, comm);
       x_masked.reinit(owned, comm);
 

@@ -2,6 +2,7 @@
 #include <pdfem/base/exceptions.h>
 #include <pdfem/base/parameter_tools.h>
 #include <pdfem/io/parameters.h>
+#include <pdfem/pd_models/interface.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
@@ -213,25 +214,24 @@ namespace pdfem
     Peridynamics::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Peridynamics");
+      const auto &models = PDModels::registry<2>();
+      std::string models_text;
+      for (const auto &name : models.names())
+        models_text += "'" + name + "': " + models.description(name) + ". ";
       prm.declare_entry("Model",
                         "pdlsm",
-                        Selection("pdlsm|rnp"),
-                        "PD model of the PD cells: 'pdlsm' (peridynamic "
-                        "least squares minimisation, second-order Taylor "
-                        "basis; Madenci et al. 2019, Liu & Xin 2021), or "
-                        "'rnp' (regularized nonlinear pairwise cohesive "
-                        "bonds, Diehl & Lipton 2022; every cell PD, see "
-                        "subsection RNP).");
+                        Selection(models.selection({"rnp"})),
+                        "PD model of the PD cells (a PD model plugin; "
+                        "pdfem --list-plugins): " +
+                          models_text +
+                          "'rnp': regularized nonlinear pairwise cohesive "
+                          "bonds, Diehl & Lipton 2022; every cell PD, see "
+                          "subsection RNP.");
       prm.declare_entry("Horizon factor",
                         "3",
                         Double(),
                         "m in delta_i = m * Delta_i, Delta_i = V_i^(1/dim) "
                         "(V_i: nodal volume); m >= 1.");
-      prm.declare_entry("Weight factor",
-                        "0.33",
-                        Double(),
-                        "a in the weight omega = exp(-(|xi|/(a delta))^2); "
-                        "a > 0 (typical: 1/3 for quads, 1/4 for triangles).");
       prm.declare_entry("Family members",
                         "all nodes",
                         Selection("all nodes|pd nodes"),
@@ -255,6 +255,8 @@ namespace pdfem
                         "cut. 2D: segments '(x1, y1) -- (x2, y2)'; 3D: "
                         "triangles '(x,y,z) -- (x,y,z) -- (x,y,z)'. Several "
                         "separated by ';'.");
+      // Each PD model's own parameters.
+      models.declare_parameters(prm);
       prm.leave_subsection();
     }
 
@@ -264,7 +266,6 @@ namespace pdfem
       prm.enter_subsection("Peridynamics");
       model                        = prm.get("Model");
       horizon_factor               = prm.get_double("Horizon factor");
-      weight_factor                = prm.get_double("Weight factor");
       fe_nodes_in_families         = prm.get("Family members") == "all nodes";
       free_crack_faces             = prm.get("Crack faces") == "free surface";
       const std::string crack_text = prm.get("Pre-existing cracks");
@@ -282,11 +283,6 @@ namespace pdfem
                            " is smaller than 1 (the horizon would be smaller "
                            "than the node spacing)",
                          "m >= 1");
-      if (!(weight_factor > 0.))
-        throw InputError(file,
-                         "Peridynamics/Weight factor",
-                         "a = " + number(weight_factor) + " is not positive",
-                         "a > 0");
       cracks.clear();
       const std::string parameter = "Peridynamics/Pre-existing cracks";
       for (const std::string &crack : split(crack_text, ';'))
@@ -391,74 +387,6 @@ namespace pdfem
 
     // ------------------------------------------------------------------- RNP
     void
-    RNP::declare(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Peridynamics");
-      prm.enter_subsection("RNP");
-      prm.declare_entry("Calibration",
-                        "moduli",
-                        Selection("moduli|constants"),
-                        "moduli: C beta from Material/Young's modulus and C "
-                        "from the fracture energy (doc/theory.md, RNP "
-                        "calibration); the Poisson's ratio must be the "
-                        "model's (1/3 plane stress, 1/4 plane strain and 3D). "
-                        "constants: C and beta as given.");
-      prm.declare_entry("C",
-                        "0",
-                        Double(0.),
-                        "C in g(r) = C (1 - exp(-beta r^2)) (constants).");
-      prm.declare_entry("beta",
-                        "0",
-                        Double(0.),
-                        "beta in g(r) = C (1 - exp(-beta r^2)) (constants).");
-      prm.declare_entry("Fracture energy",
-                        "0",
-                        Double(0.),
-                        "G_c [J/m^2] (moduli): C = G_c omega_d / (2 "
-                        "omega_(d-1) M_d).");
-      prm.declare_entry("Influence function",
-                        "constant",
-                        Selection("constant|linear"),
-                        "J(|xi|/horizon): constant 1 or linear 1 - |xi|/eps.");
-      prm.declare_entry("Force scaling",
-                        "paper",
-                        Selection("paper|prototype"),
-                        "paper: g'(sqrt|xi| S)/sqrt|xi| (eq. 27, the one the "
-                        "calibration holds for); prototype: g'/|xi| (the "
-                        "Python prototype, for regression only).");
-      prm.declare_entry("Nodal volumes",
-                        "cells",
-                        Selection("cells|uniform"),
-                        "cells: sum of V_cell / n_vertices; uniform: h^dim "
-                        "for every node (the paper's lattice), h the largest "
-                        "cell size.");
-      prm.declare_entry("Dirichlet layer",
-                        "1",
-                        Double(0.),
-                        "Prescribed displacements act on every node within "
-                        "this many horizons of the named boundary (the "
-                        "nonlocal boundary layer); 0: the boundary's nodes "
-                        "only.");
-      prm.declare_entry("Tangent",
-                        "analytic",
-                        Selection("analytic|finite difference"),
-                        "analytic (eq. 33-34 corrected) or central finite "
-                        "differences of the nodal forces (for comparison).");
-      prm.declare_entry(
-        "Interface energy",
-        "full bonds",
-        Selection("full bonds|partition"),
-        "With FE cells around the RNP region and Family members = all "
-        "nodes: full bonds: every bond counts fully (the FE cells next to "
-        "the interface are stiffened by the bonds reaching into them); "
-        "partition: each bond is weighted by the mean PD share of its two "
-        "nodes' volumes, so that bonds and FE cells split the energy "
-        "(doc/theory.md, RNP coupling; smaller ghost forces).");
-      prm.leave_subsection();
-      prm.leave_subsection();
-    }
-
-    void
     RNP::parse(ParameterHandler &prm, const std::string &)
     {
       prm.enter_subsection("Peridynamics");
@@ -533,7 +461,6 @@ namespace pdfem
       Mesh::declare(prm);
       Material::declare(prm);
       Peridynamics::declare(prm);
-      RNP::declare(prm);
       BoundaryConditions::declare(prm);
       LinearSolver::declare(prm);
       Driver::declare(prm);
@@ -553,7 +480,8 @@ namespace pdfem
       base_dir = fs::absolute(fs::path(file)).parent_path().string();
       name     = fs::path(file).stem().string();
 
-      ParameterHandler prm;
+      handler               = std::make_shared<ParameterHandler>();
+      ParameterHandler &prm = *handler;
       declare(prm);
       try
         {

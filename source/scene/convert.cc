@@ -9,6 +9,7 @@
 #include <pdfem/scene/convert.h>
 
 #include <deal.II/base/numbers.h>
+#include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
 #include <array>
@@ -38,6 +39,17 @@ namespace pdfem
         std::ostringstream s;
         s << std::setprecision(17) << v;
         return s.str();
+      }
+
+      /// Peridynamics/Weight factor of a parameter file that was read (the
+      /// pdlsm model's own parameter).
+      double
+      weight_factor(const Parameters::Scene &prm)
+      {
+        prm.handler->enter_subsection("Peridynamics");
+        const double a = prm.handler->get_double("Weight factor");
+        prm.handler->leave_subsection();
+        return a;
       }
 
       std::string
@@ -339,7 +351,7 @@ namespace pdfem
                    prm.material.thickness == s.material.thickness,
                  "Material");
           expect(prm.peridynamics.horizon_factor == s.horizon_factor &&
-                   prm.peridynamics.weight_factor == s.weight_factor &&
+                   weight_factor(prm) == s.weight_factor &&
                    prm.peridynamics.fe_nodes_in_families ==
                      s.fe_nodes_in_families &&
                    prm.peridynamics.cracks.size() == s.cracks.size(),

@@ -303,7 +303,6 @@ namespace pdfem
           prm.material.plane == Parameters::PlaneModel::plane_stress;
         settings.material.thickness   = prm.material.thickness;
         settings.horizon_factor       = prm.peridynamics.horizon_factor;
-        settings.weight_factor        = prm.peridynamics.weight_factor;
         settings.fe_nodes_in_families = prm.peridynamics.fe_nodes_in_families;
         settings.free_crack_faces     = prm.peridynamics.free_crack_faces;
         settings.cracks = Mesh::make_cracks<dim>(prm.peridynamics.cracks);
@@ -410,7 +409,7 @@ namespace pdfem
                                          setup.driver,
                                          setup.fracture,
                                          "pdlsm",
-                                         false,
+                                         nullptr,
                                          setup.settings.material.density,
                                          setup.settings.linear_solver);
         Simulator<dim> simulator(std::move(setup), comm, std::move(plugins));
@@ -433,7 +432,7 @@ namespace pdfem
                                          prm.driver,
                                          prm.fracture,
                                          prm.peridynamics.model,
-                                         rnp,
+                                         prm.handler.get(),
                                          prm.material.density,
                                          prm.linear_solver);
         Setup<dim> setup;

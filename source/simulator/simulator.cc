@@ -6,6 +6,7 @@
 #include <pdfem/simulator/summary.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
 
 #include <cmath>
 #include <filesystem>
@@ -106,12 +107,20 @@ namespace pdfem
                const Drivers::Settings  &driver_settings,
                const Fracture::Settings &fracture,
                const std::string        &model_name,
-               const bool                nonlinear_model,
+               dealii::ParameterHandler *parameters,
                const double              density,
                const Solvers::Settings  &linear_solver)
   {
     RunPlugins<dim> plugins;
-    plugins.driver = Drivers::create(driver_settings.type, file);
+    if (parameters != nullptr)
+      {
+        plugins.model = PDModels::create<dim>(model_name, file);
+        parameters->enter_subsection("Peridynamics");
+        plugins.model->parse_parameters(*parameters, file);
+        parameters->leave_subsection();
+      }
+    const bool nonlinear_model = plugins.model && !plugins.model->linear();
+    plugins.driver             = Drivers::create(driver_settings.type, file);
     plugins.driver->initialize(driver_settings, file, dim);
     plugins.criterion =
       Fracture::create_criterion<dim>(fracture.criterion, file);
@@ -400,9 +409,11 @@ namespace pdfem
                                   s.setup.driver,
                                   s.setup.fracture,
                                   "pdlsm",
-                                  false,
+                                  nullptr,
                                   s.setup.settings.material.density,
                                   s.setup.settings.linear_solver);
+    if (plugins.model)
+      s.setup.settings.pd_model = plugins.model;
     s.driver    = std::move(plugins.driver);
     s.criterion = std::move(plugins.criterion);
     // The driver's validated parameters (time step, monitor points parsed)
@@ -573,7 +584,7 @@ namespace pdfem
                                              const Drivers::Settings &,         \
                                              const Fracture::Settings &,        \
                                              const std::string &,               \
-                                             bool,                              \
+                                             dealii::ParameterHandler *,        \
                                              double,                            \
                                              const Solvers::Settings &);        \
   template void            check_plugins<dim>(const Drivers::Interface &,       \

@@ -46,6 +46,11 @@ namespace pdfem
   {
     struct Families;
   }
+  namespace PDModels
+  {
+    template <int dim>
+    class Interface;
+  }
 
   namespace Coupling
   {
@@ -73,9 +78,12 @@ namespace pdfem
     struct Settings
     {
       FE::ElasticMaterial material;
-      double              horizon_factor       = 3.;
-      double              weight_factor        = 0.33;
-      bool                fe_nodes_in_families = true;
+      double              horizon_factor = 3.;
+      /// The PD model of the PD cells (a PDModels plugin, its parameters
+      /// read); empty: PDLSM collocation (pdlsm) with @p weight_factor.
+      std::shared_ptr<PDModels::Interface<dim>> pd_model;
+      double                                    weight_factor        = 0.33;
+      bool                                      fe_nodes_in_families = true;
       /// Crack faces as free surfaces: families that lose bonds to a crack
       /// are refitted over their intact bonds, and the crack faces carry the
       /// boundary term s_k (2D). Otherwise PDLSM-FEM's cut bonds alone.
@@ -320,6 +328,10 @@ namespace pdfem
       /// two PD nodes appears once from each side.
       const PD::Families &
       families() const;
+
+      /// The PD model of the PD cells.
+      const PDModels::Interface<dim> &
+      pd_model() const;
 
       /// The horizon delta_k of every node (replicated; 0 for FE nodes).
       const std::vector<double> &

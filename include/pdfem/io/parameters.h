@@ -7,6 +7,7 @@
 #include <pdfem/solvers/settings.h>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -74,7 +75,6 @@ namespace pdfem
       /// m in delta_i = m * Delta_i, Delta_i = V_i^(1/dim).
       double horizon_factor = 3.;
       /// a in omega = exp(-(|xi| / (a delta))^2).
-      double weight_factor = 0.33;
       /// Whether FE-only nodes may be family members ("all nodes"), or only
       /// PD nodes ("pd nodes").
       bool fe_nodes_in_families = true;
@@ -147,8 +147,7 @@ namespace pdfem
       std::string tangent          = "analytic"; // analytic | finite difference
       std::string interface_energy = "full bonds"; // full bonds | partition
 
-      static void
-      declare(dealii::ParameterHandler &prm);
+      /// Read what the rnp model plugin declared (PDModels, rnp_bonds.cc).
       void
       parse(dealii::ParameterHandler &prm, const std::string &file);
     };
@@ -184,6 +183,9 @@ namespace pdfem
       Driver             driver;
       Fracture           fracture;
       Output             output;
+      /// The file as read (with overrides): plugins read their own
+      /// parameters from it (e.g. PDModels::Interface::parse_parameters()).
+      std::shared_ptr<dealii::ParameterHandler> handler;
 
       static void
       declare(dealii::ParameterHandler &prm);

@@ -5,6 +5,7 @@
 #include <pdfem/coupling/coupled_system.h>
 #include <pdfem/drivers/interface.h>
 #include <pdfem/fracture/criterion.h>
+#include <pdfem/pd_models/interface.h>
 
 #include <chrono>
 #include <map>
@@ -104,20 +105,27 @@ namespace pdfem
                 const Drivers::RunTraits       &traits,
                 const Fracture::Settings       &fracture);
 
-  /** The driver and the criterion (nullptr: none) of a run. */
+  /**
+   * The PD model, driver and criterion (nullptr: none) of a run. A null
+   * model is PDLSM collocation with Coupling::Settings::weight_factor.
+   */
   template <int dim>
   struct RunPlugins
   {
+    std::shared_ptr<PDModels::Interface<dim>> model;
     std::unique_ptr<Drivers::Interface>       driver;
     std::unique_ptr<Fracture::Criterion<dim>> criterion;
   };
 
   /**
-   * The driver and criterion named in @p driver_settings (`type`) and
-   * @p fracture (`criterion`), made from the registries, given their
-   * parameters and checked together with the rest of the run
-   * (make_run_traits(), check_plugins()). Throws InputError: a scene calls
-   * it before reading its mesh, so that bad input stops before any work.
+   * The PD model @p model_name, the driver and the criterion named in
+   * @p driver_settings (`type`) and @p fracture (`criterion`), made from
+   * the registries, given their parameters and checked together with the
+   * rest of the run (make_run_traits(), check_plugins()). The model reads
+   * its own parameters from @p parameters (a parameter file as read; if
+   * nullptr, no model is made: PDLSM collocation with the settings'
+   * weight factor). Throws InputError: a scene calls it before reading its
+   * mesh, so that bad input stops before any work.
    */
   template <int dim>
   RunPlugins<dim>
@@ -125,7 +133,7 @@ namespace pdfem
                const Drivers::Settings  &driver_settings,
                const Fracture::Settings &fracture,
                const std::string        &model_name,
-               bool                      nonlinear_model,
+               dealii::ParameterHandler *parameters,
                double                    density,
                const Solvers::Settings  &linear_solver);
 

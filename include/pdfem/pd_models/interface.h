@@ -1,0 +1,245 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef PDFEM_PD_MODELS_INTERFACE_H
+#define PDFEM_PD_MODELS_INTERFACE_H
+
+#include <pdfem/base/config.h>
+#include <pdfem/base/plugins.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <mpi.h>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace pdfem
+{
+  namespace PD
+  {
+    struct Families;
+  }
+
+  namespace PDModels
+  {
+    /**
+     * What a PD model works on: the nodes of the coupled system (replicated
+     * on every rank, index = node number) and the families of the PD nodes
+     * this rank owns, with their bond states. Filled by the coupled system,
+     * read-only for the model (bonds break only through the system); the
+     * pointers stay valid while the system lives.
+     */
+    template <int dim>
+    struct Region
+    {
+      MPI_Comm                               comm     = MPI_COMM_SELF;
+      const std::vector<dealii::Point<dim>> *position = nullptr;
+      /// A node's share of the volume of all its cells, and of its PD
+      /// cells only (V_k^pd; 0 for FE nodes).
+      const std::vector<double> *volume    = nullptr;
+      const std::vector<double> *pd_volume = nullptr;
+      /// The horizon delta_k of every node (0 for FE nodes).
+      const std::vector<double> *horizon = nullptr;
+      /// 1 if the node belongs to an FE cell.
+      const std::vector<std::uint8_t> *has_fe_cells = nullptr;
+      /// s_k = int_{S_pd} N_k n dS: a node's share of the PD region's
+      /// boundary (outer boundary, PD/FE interface, free crack faces).
+      const std::vector<dealii::Tensor<1, dim>> *boundary_area = nullptr;
+      const PD::Families                        *families      = nullptr;
+      /// The elastic constants in use (plane stress: lambda*), E and nu,
+      /// and whether a 2D body is in plane strain.
+      double lambda = 0., mu = 0., youngs_modulus = 0., poissons_ratio = 0.;
+      bool   plane_strain = false;
+      /// The input file, named in error messages.
+      std::string source_file;
+    };
+
+    /**
+     * The displacement (or any nodal vector field) at the nodes a rank's
+     * families reach, read from the raw array of a ghosted vector:
+     * u(k, c) = values[local_index[k][c]].
+     */
+    template <int dim>
+    struct NodalField
+    {
+      const double                        *values      = nullptr;
+      const std::array<unsigned int, dim> *local_index = nullptr;
+
+      double
+      operator()(const unsigned int node, const unsigned int c) const
+      {
+        return values[local_index[node][c]];
+      }
+
+      dealii::Tensor<1, dim>
+      operator[](const unsigned int node) const
+      {
+        dealii::Tensor<1, dim> v;
+        for (unsigned int c = 0; c < dim; ++c)
+          v[c] = values[local_index[node][c]];
+        return v;
+      }
+    };
+
+    /**
+     * A PD model plugin: the PD term of the coupled system (Liu & Xin, EFM
+     * 2021, eq. 26; specs/004 §1.3). Its internal force is a sum over the
+     * rows of the family owners k,
+     *
+     *   f_int,k = F_k(u_k, u_m : m in the intact bonds of k),
+     *
+     * and its tangent row the blocks dF_k / du_k and dF_k / du_m. The
+     * coupled system adds the FE cell term, eliminates prescribed DoFs,
+     * holds nodes that lost every bond, and assembles, solves and outputs;
+     * the model owns its per-bond data (weights, constants) and computes
+     * rows. Register one with PDFEM_REGISTER_PD_MODEL at the end of its
+     * `.cc` file; it is then a choice of `Peridynamics/Model`.
+     *
+     * Threads: forces(), tangent_row() and displacement_gradient() are
+     * called concurrently for disjoint owners (they must be const and
+     * write only their arguments).
+     */
+    template <int dim>
+    class Interface
+    {
+    public:
+      virtual ~Interface() = default;
+
+      /**
+       * Read the model's parameters (those its declare function declared)
+       * from @p prm, which is inside `subsection Peridynamics`; InputError
+       * naming @p file for bad values. By default: none.
+       */
+      virtual void
+      parse_parameters(dealii::ParameterHandler &prm, const std::string &file);
+
+      /**
+       * Bind to @p region and compute the per-bond data of every family
+       * over its initial (uncut) members. Collective over region.comm;
+       * throws InputError (naming region.source_file and the parameter to
+       * change) if a family cannot carry the model.
+       */
+      virtual void
+      initialize(const Region<dim> &region) = 0;
+
+      /**
+       * Bonds of the families @p changed (indices into families.owners)
+       * were cut or broken. With @p free_surfaces the crack faces are free
+       * surfaces (Peridynamics/Crack faces): a model may refit those
+       * families over their intact bonds. Called before the rows are asked
+       * for again.
+       */
+      virtual void
+      bonds_changed(const std::vector<std::size_t> &changed,
+                    bool                            free_surfaces) = 0;
+
+      /// Is F linear in u (a constant tangent, so that F(x) = K x)?
+      virtual bool
+      linear() const = 0;
+
+      /// Is the tangent symmetric (the gradient of an energy)?
+      virtual bool
+      symmetric() const = 0;
+
+      /**
+       * F_k for the owners [@p begin, @p end) at @p u, into
+       * f[dim o + c] (force units; overwritten). The system discards the
+       * rows of decoupled owners (no intact bond, no FE cell: held).
+       */
+      virtual void
+      forces(std::size_t            begin,
+             std::size_t            end,
+             const NodalField<dim> &u,
+             double                *f) const = 0;
+
+      /**
+       * The tangent row of owner @p o at @p u: blocks[0] = dF_k / du_k,
+       * blocks[1 + i] = dF_k / du_m for the i-th intact bond of the family
+       * in family order (resized here).
+       */
+      virtual void
+      tangent_row(std::size_t                          o,
+                  const NodalField<dim>               &u,
+                  std::vector<dealii::Tensor<2, dim>> &blocks) const = 0;
+
+      /// The nonlocal displacement gradient grad u (component i, direction
+      /// j) at owner @p o, for the nodal stress C : sym(grad u).
+      virtual dealii::Tensor<2, dim>
+      displacement_gradient(std::size_t o, const NodalField<dim> &u) const = 0;
+
+      /**
+       * The damage of owner @p o in the nodal results (output, history):
+       * by default the fraction of its bonds that are broken.
+       */
+      virtual double
+      damage(std::size_t o, const NodalField<dim> &u) const;
+
+    protected:
+      /// The region of initialize().
+      Region<dim> region;
+    };
+
+    /// The registry of PD models for dimension @p dim.
+    template <int dim>
+    Plugins::Registry<Interface<dim>> &
+    registry();
+
+    /// Register @p Class<2> and @p Class<3> (a template on dim).
+    template <template <int> class Class>
+    bool
+    register_pd_model(
+      const std::string                                     &name,
+      const std::string                                     &description,
+      const std::function<void(dealii::ParameterHandler &)> &declare)
+    {
+      registry<2>().add(name, description, declare, []() {
+        return std::unique_ptr<Interface<2>>(new Class<2>());
+      });
+#if PDFEM_WITH_3D
+      registry<3>().add(name, description, declare, []() {
+        return std::unique_ptr<Interface<3>>(new Class<3>());
+      });
+#endif
+      return true;
+    }
+
+    /// The model @p name, its parameters not read yet (InputError naming
+    /// `Peridynamics/Model` if unknown).
+    template <int dim>
+    std::unique_ptr<Interface<dim>>
+    create(const std::string &name, const std::string &file);
+
+    /// The collocated PDLSM model (pdlsm) with the weight factor
+    /// @p weight_factor: what a coupled system uses when it is given none.
+    template <int dim>
+    std::unique_ptr<Interface<dim>>
+    make_pdlsm(double weight_factor);
+  } // namespace PDModels
+} // namespace pdfem
+
+/**
+ * Register the PD model class template @p classname (on dim) under @p name
+ * (a `Peridynamics/Model` value) with a one-line @p description; @p declare
+ * (a function of ParameterHandler &, or {}) declares its parameters inside
+ * `subsection Peridynamics`. At namespace scope in the model's `.cc`.
+ */
+#define PDFEM_REGISTER_PD_MODEL(classname, name, description, declare)     \
+  namespace                                                                \
+  {                                                                        \
+    const bool PDFEM_PLUGIN_CONCAT(pdfem_pd_model_registered_, __LINE__) = \
+      ::pdfem::PDModels::register_pd_model<classname>(name,                \
+                                                      description,         \
+                                                      declare);            \
+  }
+
+#endif

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The PD model family: its registries and the defaults of Interface.
+#include <pdfem/base/config.h>
+#include <pdfem/base/exceptions.h>
+#include <pdfem/pd/families.h>
+#include <pdfem/pd_models/interface.h>
+
+namespace pdfem
+{
+  namespace PDModels
+  {
+    template <int dim>
+    Plugins::Registry<Interface<dim>> &
+    registry()
+    {
+      static Plugins::Registry<Interface<dim>> models;
+      return models;
+    }
+
+    template <int dim>
+    std::unique_ptr<Interface<dim>>
+    create(const std::string &name, const std::string &file)
+    {
+      if (!registry<dim>().has(name))
+        {
+          const std::string near =
+            Plugins::nearest_name(name, registry<dim>().names());
+          throw InputError(file,
+                           "Peridynamics/Model",
+                           "unknown PD model '" + name + "'" +
+                             (near.empty() ? "" :
+                                             " (did you mean '" + near + "'?)"),
+                           registry<dim>().selection());
+        }
+      return registry<dim>().create(name);
+    }
+
+    template <int dim>
+    void
+    Interface<dim>::parse_parameters(dealii::ParameterHandler &,
+                                     const std::string &)
+    {}
+
+    template <int dim>
+    double
+    Interface<dim>::damage(const std::size_t o, const NodalField<dim> &) const
+    {
+      const PD::Families &f     = *region.families;
+      const std::size_t   first = f.offsets[o], last = f.offsets[o + 1];
+      if (last == first)
+        return 0.;
+      std::size_t n_intact = 0;
+      for (std::size_t j = first; j < last; ++j)
+        n_intact += f.intact[j];
+      return 1. - double(n_intact) / double(last - first);
+    }
+
+#define INSTANTIATE(dim)                                                       \
+  template class Interface<dim>;                                               \
+  template Plugins::Registry<Interface<dim>> &registry<dim>();                 \
+  template std::unique_ptr<Interface<dim>>    create<dim>(const std::string &, \
+                                                       const std::string &);
+    PDFEM_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace PDModels
+} // namespace pdfem
