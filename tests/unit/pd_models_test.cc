@@ -1,0 +1,281 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The PD model plugins as terms of the coupled system (pd_models/interface.h):
+// - every registered model's tangent rows are the central finite
+//   differences of its own force rows, for intact, softened and broken
+//   bonds (pdlsm is linear: its rows are exact; rnp is nonlinear);
+// - rnp's term is symmetric and its forces sum to zero (pairwise bonds);
+// - the coupled system reaches the same Newton solution with either model
+//   on a small all-PD plate in the linear range (rnp calibrated to the
+//   same E).
+#include <pdfem/base/exceptions.h>
+#include <pdfem/coupling/coupled_system.h>
+#include <pdfem/pd/families.h>
+#include <pdfem/pd_models/interface.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+namespace
+{
+  using namespace dealii;
+  using namespace pdfem;
+
+  /// The model @p name with its parameters from @p entries (Peridynamics
+  /// subsection, "RNP/C" style paths for its own subsections).
+  std::shared_ptr<PDModels::Interface<2>>
+  make_model(const std::string                                      &name,
+             const std::vector<std::pair<std::string, std::string>> &entries)
+  {
+    ParameterHandler prm;
+    prm.enter_subsection("Peridynamics");
+    PDModels::registry<2>().declare_parameters(prm);
+    for (const auto &[path, value] : entries)
+      {
+        const auto slash = path.find('/');
+        if (slash == std::string::npos)
+          prm.set(path, value);
+        else
+          {
+            prm.enter_subsection(path.substr(0, slash));
+            prm.set(path.substr(slash + 1), value);
+            prm.leave_subsection();
+          }
+      }
+    std::shared_ptr<PDModels::Interface<2>> model =
+      PDModels::create<2>(name, "test.prm");
+    model->parse_parameters(prm, "test.prm");
+    prm.leave_subsection();
+    return model;
+  }
+
+  std::shared_ptr<PDModels::Interface<2>>
+  make_rnp(const double C = 1e3, const double beta = 30.)
+  {
+    return make_model("rnp",
+                      {{"RNP/Calibration", "constants"},
+                       {"RNP/C", std::to_string(C)},
+                       {"RNP/beta", std::to_string(beta)}});
+  }
+
+  /// A 1 x 1 plate of 8 x 8 jittered quads, cells left of @p pd_left_of
+  /// PD, nu = 1/3 (the bond-based value), with @p model.
+  struct Plate
+  {
+    Plate(std::shared_ptr<PDModels::Interface<2>> model,
+          const double                            pd_left_of = 2.)
+      : tria(MPI_COMM_WORLD)
+    {
+      GridGenerator::subdivided_hyper_cube(tria, 8);
+      GridTools::distort_random(0.15, tria, false, 7);
+      std::vector<bool> pd(tria.n_active_cells());
+      for (const auto &cell : tria.active_cell_iterators())
+        pd[cell->active_cell_index()] = cell->center()[0] < pd_left_of;
+      Coupling::Settings<2> settings;
+      settings.material.youngs_modulus = 1e3;
+      settings.material.poissons_ratio = 1. / 3.;
+      settings.material.plane_stress   = true;
+      settings.horizon_factor          = 3.;
+      settings.pd_model                = model;
+      settings.linear_solver.type      = "direct";
+      system = std::make_unique<Coupling::CoupledSystem<2>>(tria, pd, settings);
+    }
+    parallel::shared::Triangulation<2>          tria;
+    std::unique_ptr<Coupling::CoupledSystem<2>> system;
+  };
+
+  /// A nodal field over every node, stored node by node.
+  struct Field
+  {
+    explicit Field(const unsigned int n_nodes)
+      : values(2 * n_nodes)
+      , index(n_nodes)
+    {
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        index[k] = {{2 * k, 2 * k + 1}};
+    }
+    PDModels::NodalField<2>
+    field() const
+    {
+      return {values.data(), index.data()};
+    }
+    std::vector<double>                      values;
+    std::vector<std::array<unsigned int, 2>> index;
+  };
+
+  /// max |tangent row - central differences of the force rows| relative to
+  /// the largest tangent entry, over every owner and intact bond.
+  double
+  tangent_error(const PDModels::Interface<2> &model,
+                const PD::Families           &f,
+                Field                        &u,
+                const double                  h)
+  {
+    const std::size_t         n = f.owners.size();
+    std::vector<double>       fp(2 * n), fm(2 * n);
+    std::vector<Tensor<2, 2>> blocks;
+    double                    error = 0., scale = 0.;
+    for (std::size_t o = 0; o < n; ++o)
+      {
+        model.tangent_row(o, u.field(), blocks);
+        std::vector<unsigned int> columns{f.owners[o]};
+        for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+          if (f.intact[j])
+            columns.push_back(f.members[j]);
+        EXPECT_EQ(blocks.size(), columns.size());
+        for (std::size_t b = 0; b < columns.size(); ++b)
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              double &x = u.values[2 * columns[b] + c];
+              x += h;
+              model.forces(o, o + 1, u.field(), fp.data());
+              x -= 2. * h;
+              model.forces(o, o + 1, u.field(), fm.data());
+              x += h;
+              for (unsigned int r = 0; r < 2; ++r)
+                {
+                  const double fd = (fp[2 * o + r] - fm[2 * o + r]) / (2. * h);
+                  error = std::max(error, std::abs(fd - blocks[b][r][c]));
+                  scale = std::max(scale, std::abs(blocks[b][r][c]));
+                }
+            }
+      }
+    EXPECT_GT(scale, 0.);
+    return error / scale;
+  }
+
+  /// u = @p amplitude times a smooth field plus a random part.
+  void
+  deform(const Coupling::CoupledSystem<2> &system,
+         Field                            &u,
+         const double                      amplitude)
+  {
+    std::mt19937                           random(3);
+    std::uniform_real_distribution<double> noise(-0.2, 0.2);
+    for (unsigned int k = 0; k < u.index.size(); ++k)
+      {
+        const Point<2> p = system.node_position(k);
+        u.values[2 * k]  = amplitude * (p[0] * p[1] + noise(random));
+        u.values[2 * k + 1] =
+          amplitude * (0.5 * p[0] * p[0] - p[1] + noise(random));
+      }
+  }
+
+  /// Break every fifth intact bond of the PD nodes (both directions).
+  void
+  break_some_bonds(Coupling::CoupledSystem<2> &system)
+  {
+    system.break_bonds_if([](const unsigned int k, const unsigned int m) {
+      return (k + m) % 5 == 0;
+    });
+    EXPECT_GT(system.families().n_broken(), 0u);
+  }
+
+  TEST(PDModels, RegistryHasTheBuiltInModels)
+  {
+    const auto names = PDModels::registry<2>().names();
+    EXPECT_NE(std::find(names.begin(), names.end(), "pdlsm"), names.end());
+    EXPECT_NE(std::find(names.begin(), names.end(), "rnp"), names.end());
+    EXPECT_THROW(PDModels::create<2>("rpn", "test.prm"), InputError);
+    EXPECT_FALSE(make_model("pdlsm", {})->linear() == false);
+    EXPECT_FALSE(make_rnp()->linear());
+    EXPECT_TRUE(make_rnp()->symmetric());
+    EXPECT_THROW(make_model("pdlsm", {{"Weight factor", "-1"}}), InputError);
+    EXPECT_THROW(make_model("rnp", {{"RNP/Calibration", "constants"}}),
+                 InputError);
+  }
+
+  TEST(PDModels, TangentRowsAreCentralDifferencesOfTheForceRows)
+  {
+    for (const std::string name : {"pdlsm", "rnp"})
+      for (const bool broken : {false, true})
+        {
+          auto  model = name == "rnp" ?
+                          make_rnp() :
+                          make_model("pdlsm", {{"Weight factor", "0.33"}});
+          Plate plate(model, 0.6);
+          if (broken)
+            break_some_bonds(*plate.system);
+          const auto &f = plate.system->families();
+          Field       u(plate.system->size().n_nodes);
+          // rnp: r_c = 1 / sqrt(2 beta) = 0.13; strains of a few 1e-2 on
+          // bonds of 0.375 soften some bonds (r = sqrt|xi| S past r_c).
+          for (const double amplitude : {1e-3, 0.3})
+            {
+              deform(*plate.system, u, amplitude);
+              if (name == "rnp")
+                {
+                  double d = 0.;
+                  for (std::size_t o = 0; o < f.owners.size(); ++o)
+                    d = std::max(d, model->damage(o, u.field()));
+                  // softened bonds (past the peak force) at the larger
+                  // amplitude only
+                  EXPECT_EQ(d > 1., amplitude > 0.1) << d;
+                }
+              EXPECT_LT(
+                tangent_error(*model, f, u, 1e-6 * std::max(amplitude, 1e-2)),
+                1e-6)
+                << name << (broken ? " with broken bonds" : "")
+                << ", amplitude " << amplitude;
+            }
+        }
+  }
+
+  TEST(PDModels, RNPTermIsSymmetricAndSelfEquilibrated)
+  {
+    for (const bool broken : {false, true})
+      {
+        auto  model = make_rnp();
+        Plate plate(model); // all PD
+        if (broken)
+          break_some_bonds(*plate.system);
+        const auto    &f = plate.system->families();
+        const unsigned n = plate.system->size().n_nodes;
+        Field          u(n);
+        deform(*plate.system, u, 0.3);
+        // Dense K of the PD term from the tangent rows.
+        std::vector<double>       K(4 * n * n, 0.), forces(2 * f.owners.size());
+        std::vector<Tensor<2, 2>> blocks;
+        double                    scale = 0.;
+        for (std::size_t o = 0; o < f.owners.size(); ++o)
+          {
+            model->tangent_row(o, u.field(), blocks);
+            std::vector<unsigned int> columns{f.owners[o]};
+            for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+              if (f.intact[j])
+                columns.push_back(f.members[j]);
+            for (std::size_t b = 0; b < columns.size(); ++b)
+              for (unsigned int r = 0; r < 2; ++r)
+                for (unsigned int c = 0; c < 2; ++c)
+                  {
+                    K[(2 * f.owners[o] + r) * 2 * n + 2 * columns[b] + c] +=
+                      blocks[b][r][c];
+                    scale = std::max(scale, std::abs(blocks[b][r][c]));
+                  }
+          }
+        double asymmetry = 0.;
+        for (unsigned int i = 0; i < 2 * n; ++i)
+          for (unsigned int j = 0; j < i; ++j)
+            asymmetry = std::max(asymmetry,
+                                 std::abs(K[i * 2 * n + j] - K[j * 2 * n + i]));
+        EXPECT_LT(asymmetry, 1e-12 * scale);
+        model->forces(0, f.owners.size(), u.field(), forces.data());
+        double sum[2] = {0., 0.}, largest = 0.;
+        for (std::size_t o = 0; o < f.owners.size(); ++o)
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              sum[c] += forces[2 * o + c];
+              largest = std::max(largest, std::abs(forces[2 * o + c]));
+            }
+        EXPECT_GT(largest, 0.);
+        EXPECT_LT(std::abs(sum[0]) + std::abs(sum[1]), 1e-12 * largest * n);
+      }
+  }
+} // namespace
