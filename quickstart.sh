@@ -25,7 +25,7 @@ jobs=${PDFEM_JOBS:-2}
 # ---- 1. Debian packages (only those that are missing)
 # libopenblas0-serial replaces Debian's reference BLAS under MUMPS (its dense kernels): a MUMPS
 # factorisation of plateCrack's coupled matrix took 2.4x less time with it (doc/benchmarks/fracture.md).
-packages=(cmake ninja-build g++ libdeal.ii-dev gmsh openmpi-bin libgtest-dev ccache libopenblas0-serial)
+packages=(cmake ninja-build g++ libdeal.ii-dev libmumps-dev gmsh openmpi-bin libgtest-dev ccache libopenblas0-serial)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -2,6 +2,7 @@
 // CoupledSystem: internal force, tangent (assembled or matrix-free), external
 // force, residual, solve.
 #include <pdfem/base/config.h>
+#include <pdfem/solvers/inertia.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -513,8 +514,8 @@ namespace pdfem
       s.assemble_external(t);
       // Assembled on demand: the last residual of a step only checks.
       s.tangent_stale = assemble_tangent && !s.matrix_free;
-      if (s.tangent_stale && !s.model->linear())
-        s.u_tangent = s.u_ghosted;
+      if (!s.model->linear())
+        s.u_tangent = s.u_ghosted; // the state check_stability() tests
 
       // Reactions: the force the supports exert, f_int - f_ext, summed over
       // each set's nodes (every component), for the 2D thickness.
@@ -586,29 +587,54 @@ namespace pdfem
       return s.solver.solve(s.matrix, du, r, allowed_residual);
     }
 
-#define INSTANTIATE(dim)                                                       \
-  template void   CoupledSystem<dim>::Impl::assemble_fe_matrix();              \
-  template void   CoupledSystem<dim>::Impl::assemble_auxiliary();              \
-  template void   CoupledSystem<dim>::Impl::update_held();                     \
-  template double CoupledSystem<dim>::Impl::held_diagonal(global_dof_index)    \
-    const;                                                                     \
-  template void CoupledSystem<dim>::Impl::assemble_external(double);           \
-  template void CoupledSystem<dim>::Impl::assemble_tangent();                  \
-  template void CoupledSystem<dim>::Impl::add_to_matrix(                       \
-    TrilinosWrappers::SparseMatrix &,                                          \
-    const std::vector<global_dof_index> &,                                     \
-    const std::vector<global_dof_index> &,                                     \
-    const std::vector<double> &,                                               \
-    bool) const;                                                               \
-  template void   CoupledSystem<dim>::apply_dirichlet(Vector &, double) const; \
-  template double CoupledSystem<dim>::residual(const Vector &,                 \
-                                               double,                         \
-                                               Vector &,                       \
-                                               bool);                          \
-  template double CoupledSystem<dim>::force_scale() const;                     \
-  template unsigned int CoupledSystem<dim>::solve_linear(Vector &,             \
-                                                         const Vector &);      \
-  template unsigned int CoupledSystem<dim>::solve_linear_within(               \
+    template <int dim>
+    Drivers::StabilityReport
+    CoupledSystem<dim>::check_stability()
+    {
+      Impl &s = *impl;
+      AssertThrow(s.model->symmetric() && !s.matrix_free,
+                  ExcMessage("the inertia check needs an assembled symmetric "
+                             "tangent"));
+      // The tangent at the last residual's state (that residual may have
+      // only checked convergence and not assembled it).
+      if (s.tangent_stale || !s.model->linear() ||
+          s.matrix.n_nonzero_elements() == 0)
+        {
+          s.assemble_tangent();
+          s.tangent_stale = false;
+        }
+      const Solvers::Inertia   inertia = Solvers::compute_inertia(s.matrix);
+      Drivers::StabilityReport report;
+      report.singular                = inertia.singular;
+      report.n_negative              = inertia.n_negative;
+      report.smallest_relative_pivot = inertia.smallest_relative_pivot;
+      return report;
+    }
+
+#define INSTANTIATE(dim)                                                              \
+  template void   CoupledSystem<dim>::Impl::assemble_fe_matrix();                     \
+  template void   CoupledSystem<dim>::Impl::assemble_auxiliary();                     \
+  template void   CoupledSystem<dim>::Impl::update_held();                            \
+  template double CoupledSystem<dim>::Impl::held_diagonal(global_dof_index)           \
+    const;                                                                            \
+  template void CoupledSystem<dim>::Impl::assemble_external(double);                  \
+  template void CoupledSystem<dim>::Impl::assemble_tangent();                         \
+  template void CoupledSystem<dim>::Impl::add_to_matrix(                              \
+    TrilinosWrappers::SparseMatrix &,                                                 \
+    const std::vector<global_dof_index> &,                                            \
+    const std::vector<global_dof_index> &,                                            \
+    const std::vector<double> &,                                                      \
+    bool) const;                                                                      \
+  template void   CoupledSystem<dim>::apply_dirichlet(Vector &, double) const;        \
+  template double CoupledSystem<dim>::residual(const Vector &,                        \
+                                               double,                                \
+                                               Vector &,                              \
+                                               bool);                                 \
+  template double CoupledSystem<dim>::force_scale() const;                            \
+  template Drivers::StabilityReport CoupledSystem<dim>::check_stability();            \
+  template unsigned int             CoupledSystem<dim>::solve_linear(Vector &,        \
+                                                         const Vector &); \
+  template unsigned int             CoupledSystem<dim>::solve_linear_within(          \
     Vector &, const Vector &, double);
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

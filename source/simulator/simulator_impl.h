@@ -74,6 +74,13 @@ namespace pdfem
     {
       return u;
     }
+    /// The inertia check of a nonlinear model with a symmetric tangent.
+    Drivers::StabilityInterface *
+    stability() override
+    {
+      const auto &model = coupled->pd_model();
+      return !model.linear() && model.symmetric() ? coupled.get() : nullptr;
+    }
     void
     initial_velocity(Drivers::SystemInterface::Vector &v0) override;
     Drivers::GrowthCheck

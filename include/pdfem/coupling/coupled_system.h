@@ -3,6 +3,7 @@
 #define PDFEM_COUPLING_COUPLED_SYSTEM_H
 
 #include <pdfem/drivers/dynamic_system_interface.h>
+#include <pdfem/drivers/newton_driver.h>
 #include <pdfem/fe/elastic_material.h>
 #include <pdfem/mesh/cracks.h>
 #include <pdfem/solvers/settings.h>
@@ -210,7 +211,8 @@ namespace pdfem
      * matrix K_N = c_m M + c_k K factorised once and reused.
      */
     template <int dim>
-    class CoupledSystem : public Drivers::DynamicSystemInterface
+    class CoupledSystem : public Drivers::DynamicSystemInterface,
+                          public Drivers::StabilityInterface
     {
     public:
       /// Set up nodes, families, DoFs and the sparsity pattern. @p cell_is_pd
@@ -285,6 +287,17 @@ namespace pdfem
       dealii::Tensor<1, dim>
       node_displacement(const Vector &u, unsigned int k) const;
       /// @}
+
+      /**
+       * The inertia of the tangent of the last residual() (prescribed and
+       * held DoFs eliminated, so they add positive eigenvalues only): its
+       * negative eigenvalues by the negative pivots of MUMPS's symmetric
+       * LDL^T on every rank (Solvers::compute_inertia(); Sylvester's law).
+       * For a model with a symmetric tangent (PDModels::Interface::
+       * symmetric()); collective.
+       */
+      Drivers::StabilityReport
+      check_stability() override;
 
       /// Global counts (the same on every rank).
       ProblemSize
