@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The nearest plugin name, for "did you mean" in messages.
+#include <pdfem/base/exceptions.h>
 #include <pdfem/base/plugins.h>
 
 #include <algorithm>
@@ -61,6 +62,23 @@ namespace pdfem
       // Close: at most a third of the letters differ.
       return best_distance <= std::max<std::size_t>(1, best.size() / 3) ? best :
                                                                           "";
+    }
+
+    void
+    throw_unknown(const std::string              &name,
+                  const std::vector<std::string> &candidates,
+                  const std::string              &file,
+                  const std::string              &parameter,
+                  const std::string              &what,
+                  const std::string              &allowed)
+    {
+      const std::string near = nearest_name(name, candidates);
+      throw InputError(file,
+                       parameter,
+                       "unknown " + what + " '" + name + "'" +
+                         (near.empty() ? "" :
+                                         " (did you mean '" + near + "'?)"),
+                       allowed);
     }
   } // namespace Plugins
 } // namespace pdfem

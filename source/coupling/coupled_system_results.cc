@@ -41,9 +41,14 @@ namespace pdfem
         for (unsigned int c = 0; c < dim; ++c)
           disp[k * dim + c] = u_at(k, c);
 
-      auto add_stress = [&](const unsigned int             k,
-                            const SymmetricTensor<2, dim> &sigma,
-                            const Tensor<2, dim>          &grad_u) {
+      // One contribution to node k: grad u and sigma = C : sym(grad u).
+      const double lambda     = s.settings.material.lambda();
+      const double mu         = s.settings.material.mu();
+      auto         add_stress = [&](const unsigned int    k,
+                            const Tensor<2, dim> &grad_u) {
+        const SymmetricTensor<2, dim> eps = symmetrize(grad_u);
+        const SymmetricTensor<2, dim> sigma =
+          lambda * trace(eps) * unit_symmetric_tensor<dim>() + 2. * mu * eps;
         for (unsigned int c = 0; c < n_stress; ++c)
           stress[k * n_stress + c] += sigma.access_raw_entry(c);
         for (unsigned int i = 0; i < dim; ++i)
@@ -74,9 +79,7 @@ namespace pdfem
       // extrapolated gradient is the extrapolated Gauss-point stress.
       if (!s.vertex_gradients.built)
         s.make_vertex_gradients();
-      const double lambda   = s.settings.material.lambda();
-      const double mu       = s.settings.material.mu();
-      const auto   fe_cells = [&]() {
+      const auto fe_cells = [&]() {
         const auto &g = s.vertex_gradients;
         std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> u_cell;
         for (std::size_t j = 0; j < g.n.size(); ++j)
@@ -94,11 +97,7 @@ namespace pdfem
                   for (unsigned int c = 0; c < dim; ++c)
                     for (unsigned int d = 0; d < dim; ++d)
                       grad_u[c][d] += u_cell[a][c] * w[d];
-                const SymmetricTensor<2, dim> eps = symmetrize(grad_u);
-                add_stress(nodes[n + v],
-                           lambda * trace(eps) * unit_symmetric_tensor<dim>() +
-                             2. * mu * eps,
-                           grad_u);
+                add_stress(nodes[n + v], grad_u);
               }
           }
       };
@@ -108,13 +107,7 @@ namespace pdfem
       s.for_each_pd_chunk(fe_cells, pd_owners);
       for (std::size_t o = 0; o < n_owners; ++o)
         if (!s.decoupled[o])
-          {
-            const SymmetricTensor<2, dim> eps = symmetrize(owner_gradient[o]);
-            add_stress(s.families.owners[o],
-                       lambda * trace(eps) * unit_symmetric_tensor<dim>() +
-                         2. * mu * eps,
-                       owner_gradient[o]);
-          }
+          add_stress(s.families.owners[o], owner_gradient[o]);
 
       Utilities::MPI::sum(disp, s.comm, disp);
       Utilities::MPI::sum(stress, s.comm, stress);

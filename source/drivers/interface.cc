@@ -18,18 +18,7 @@ namespace pdfem
     std::unique_ptr<Interface>
     create(const std::string &name, const std::string &file)
     {
-      if (!registry().has(name))
-        {
-          const std::string near =
-            Plugins::nearest_name(name, registry().names());
-          throw InputError(file,
-                           "Driver/Type",
-                           "unknown driver '" + name + "'" +
-                             (near.empty() ? "" :
-                                             " (did you mean '" + near + "'?)"),
-                           registry().selection());
-        }
-      return registry().create(name);
+      return registry().create(name, file, "Driver/Type", "driver");
     }
 
     void

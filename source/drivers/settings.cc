@@ -6,7 +6,6 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <sstream>
 
 namespace pdfem
 {
@@ -25,13 +24,11 @@ namespace pdfem
     Settings::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Driver");
-      std::ostringstream types;
-      for (const auto &name : registry().names())
-        types << name << ": " << registry().description(name) << " ";
       prm.declare_entry("Type",
                         "static",
                         Selection(registry().selection()),
-                        "The driver (pdfem --list-plugins). " + types.str() +
+                        "The driver (pdfem --list-plugins). " +
+                          registry().summary() +
                           "In dynamic runs, t in the boundary expressions is "
                           "physical time.");
       prm.declare_entry("Load steps",

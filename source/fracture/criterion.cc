@@ -23,18 +23,8 @@ namespace pdfem
     {
       if (name == "none")
         return nullptr;
-      if (!registry<dim>().has(name))
-        {
-          const std::string near =
-            Plugins::nearest_name(name, registry<dim>().names());
-          throw InputError(file,
-                           "Fracture/Criterion",
-                           "unknown criterion '" + name + "'" +
-                             (near.empty() ? "" :
-                                             " (did you mean '" + near + "'?)"),
-                           registry<dim>().selection({"none"}));
-        }
-      return registry<dim>().create(name);
+      return registry<dim>().create(
+        name, file, "Fracture/Criterion", "criterion", {"none"});
     }
 
     template <int dim>

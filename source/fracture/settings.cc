@@ -6,7 +6,6 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <sstream>
 
 namespace pdfem
 {
@@ -25,13 +24,10 @@ namespace pdfem
     Settings::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Fracture");
-      std::ostringstream criteria;
-      for (const auto &name : registry<2>().names())
-        criteria << name << ": " << registry<2>().description(name) << " ";
       prm.declare_entry("Criterion",
                         "none",
                         Selection(registry<2>().selection({"none"})),
-                        "none: cracks never grow. " + criteria.str() +
+                        "none: cracks never grow. " + registry<2>().summary() +
                           "In static runs the criterion is only evaluated "
                           "and reported (pdfem --list-plugins).");
       prm.declare_entry("Fracture toughness",

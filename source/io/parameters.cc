@@ -215,18 +215,13 @@ namespace pdfem
     {
       prm.enter_subsection("Peridynamics");
       const auto &models = PDModels::registry<2>();
-      std::string models_text;
-      for (const auto &name : models.names())
-        models_text += "'" + name + "': " + models.description(name) + ". ";
       prm.declare_entry("Model",
                         "pdlsm",
-                        Selection(models.selection({"rnp"})),
-                        "PD model of the PD cells (a PD model plugin; "
-                        "pdfem --list-plugins): " +
-                          models_text +
-                          "'rnp': regularized nonlinear pairwise cohesive "
-                          "bonds, Diehl & Lipton 2022; every cell PD, see "
-                          "subsection RNP.");
+                        Selection(models.selection()),
+                        "PD model of the PD cells (pdfem --list-plugins). " +
+                          models.summary() +
+                          "rnp scenes run every cell as PD (subsection "
+                          "RNP).");
       prm.declare_entry("Horizon factor",
                         "3",
                         Double(),

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The PD model family: its registries and the defaults of Interface.
 #include <pdfem/base/config.h>
-#include <pdfem/base/exceptions.h>
 #include <pdfem/pd/families.h>
 #include <pdfem/pd_models/interface.h>
 
@@ -21,18 +20,10 @@ namespace pdfem
     std::unique_ptr<Interface<dim>>
     create(const std::string &name, const std::string &file)
     {
-      if (!registry<dim>().has(name))
-        {
-          const std::string near =
-            Plugins::nearest_name(name, registry<dim>().names());
-          throw InputError(file,
-                           "Peridynamics/Model",
-                           "unknown PD model '" + name + "'" +
-                             (near.empty() ? "" :
-                                             " (did you mean '" + near + "'?)"),
-                           registry<dim>().selection());
-        }
-      return registry<dim>().create(name);
+      return registry<dim>().create(name,
+                                    file,
+                                    "Peridynamics/Model",
+                                    "PD model");
     }
 
     template <int dim>

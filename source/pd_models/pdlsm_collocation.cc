@@ -134,6 +134,11 @@ namespace pdfem
       /// bond is broken, so that the kernel needs no state tests).
       std::vector<Tensor<1, dim>>          weight_a;
       std::vector<SymmetricTensor<2, dim>> bond_block;
+      /// fit()'s work space, kept from family to family.
+      std::vector<Tensor<1, dim>>          xi, a;
+      std::vector<double>                  volume;
+      std::vector<SymmetricTensor<2, dim>> b;
+      std::vector<std::size_t>             bond;
     };
 
     template <int dim>
@@ -141,13 +146,12 @@ namespace pdfem
     bool
     PDLSMCollocation<dim>::fit(const std::size_t o, const Use &use)
     {
-      const PD::Families                  &f = *this->region.families;
-      const auto                          &x = *this->region.position;
-      const unsigned int                   k = f.owners[o];
-      std::vector<Tensor<1, dim>>          xi, a;
-      std::vector<double>                  volume;
-      std::vector<SymmetricTensor<2, dim>> b;
-      std::vector<std::size_t>             bond;
+      const PD::Families &f = *this->region.families;
+      const auto         &x = *this->region.position;
+      const unsigned int  k = f.owners[o];
+      xi.clear();
+      volume.clear();
+      bond.clear();
       for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
         if (use(j))
           {

@@ -32,6 +32,19 @@ namespace pdfem
    */
   namespace Plugins
   {
+    /**
+     * Throw InputError naming @p file and @p parameter: @p name is not a
+     * registered @p what; the message suggests the nearest of @p
+     * candidates and lists @p allowed.
+     */
+    [[noreturn]] void
+    throw_unknown(const std::string              &name,
+                  const std::vector<std::string> &candidates,
+                  const std::string              &file,
+                  const std::string              &parameter,
+                  const std::string              &what,
+                  const std::string              &allowed);
+
     /** One registered plugin. */
     template <typename Interface>
     struct Entry
@@ -89,6 +102,35 @@ namespace pdfem
       {
         const auto it = entries.find(name);
         return it == entries.end() ? nullptr : it->second.create();
+      }
+
+      /**
+       * A new object of the plugin @p name, which a user gave as
+       * @p parameter in @p file; InputError ("unknown @p what", with a
+       * suggestion and the allowed values, @p extra first) if there is
+       * none.
+       */
+      std::unique_ptr<Interface>
+      create(const std::string              &name,
+             const std::string              &file,
+             const std::string              &parameter,
+             const std::string              &what,
+             const std::vector<std::string> &extra = {}) const
+      {
+        if (!has(name))
+          throw_unknown(name, names(), file, parameter, what, selection(extra));
+        return create(name);
+      }
+
+      /// "name: description " for every plugin, for a parameter's
+      /// documentation.
+      std::string
+      summary() const
+      {
+        std::string s;
+        for (const auto &e : entries)
+          s += e.first + ": " + e.second.description + " ";
+        return s;
       }
 
       /// The names in alphabetical order.
