@@ -104,6 +104,10 @@ namespace pdfem
       auto              pos = what.find(key);
       std::string       msg =
         pos == std::string::npos ? what : what.substr(pos + key.size());
+      // deal.II appends the stack trace of where it threw: not for users.
+      const auto trace = msg.find("Stacktrace:");
+      if (trace != std::string::npos)
+        msg.erase(trace);
       msg = std::regex_replace(msg, std::regex("-{5,}"), "");
       msg = std::regex_replace(msg, std::regex("\\s+"), " ");
       return trim(msg);
