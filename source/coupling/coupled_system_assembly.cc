@@ -461,9 +461,13 @@ namespace pdfem
                                       update_values | update_quadrature_points |
                                         update_JxW_values);
           dealii::Vector<double> b(dim);
+          // Particle models take b(x_k) V_k at their PD nodes (below); the
+          // cells they cover add nothing then.
+          const bool nodal = layout.nodal_body_force;
           for (const auto &cell : dofs.active_cell_iterators())
             {
-              if (!cell->is_locally_owned())
+              if (!cell->is_locally_owned() ||
+                  (nodal && cell_pd[cell->active_cell_index()]))
                 continue;
               fe_values.reinit(cell);
               const FEValues<dim> &fv = fe_values.get_present_fe_values();
@@ -483,6 +487,14 @@ namespace pdfem
                 }
               f_ext.add(local_dofs, f);
             }
+          if (nodal)
+            for (const unsigned int k : owned_nodes)
+              if (is_pd[k])
+                {
+                  body_fn->vector_value(to_3d(x[k]), b);
+                  for (unsigned int c = 0; c < dim; ++c)
+                    f_ext[node_dof[k][c]] += b[c] * model->nodal_volume(k);
+                }
         }
       f_ext.compress(VectorOperation::add);
     }

@@ -134,10 +134,11 @@ namespace pdfem
           d.lumped.add(local_dofs, row);
         }
       d.lumped.compress(VectorOperation::add);
+      // PD nodes: rho times the model's nodal volume (V_k^pd for pdlsm).
       for (const unsigned int k : s.owned_nodes)
-        if (s.pd_volume[k] > 0.)
+        if (s.is_pd[k])
           for (unsigned int c = 0; c < dim; ++c)
-            d.lumped[s.node_dof[k][c]] += rho * s.pd_volume[k];
+            d.lumped[s.node_dof[k][c]] += rho * s.model->nodal_volume(k);
       d.lumped.compress(VectorOperation::add);
       d.have_lumped = true;
       return d.lumped;
@@ -237,8 +238,8 @@ namespace pdfem
                 const auto i = s.node_dof[k][c];
                 if (s.dof_fixed[i])
                   d.mass.add(i, i, m[i]);
-                else if (s.pd_volume[k] > 0.)
-                  d.mass.add(i, i, rho * s.pd_volume[k]);
+                else if (s.is_pd[k])
+                  d.mass.add(i, i, rho * s.model->nodal_volume(k));
               }
           d.mass.compress(VectorOperation::add);
           d.consistent = true;

@@ -70,25 +70,50 @@ namespace pdfem
       if (!settings.fe_nodes_in_families)
         may_be_member = is_pd;
       families = PD::find_families(x, horizon, owners, may_be_member);
+      if (layout.pairwise && settings.fe_nodes_in_families)
+        {
+          // The reverse of the PD-FE bonds: each owned FE node within a
+          // horizon of PD nodes owns the family of those PD nodes.
+          std::vector<unsigned int> fe_owners;
+          for (const unsigned int k : owned_nodes)
+            if (!is_pd[k])
+              fe_owners.push_back(k);
+          const PD::Families reverse =
+            PD::find_families(x, horizon, fe_owners, is_pd);
+          for (std::size_t o = 0; o < reverse.owners.size(); ++o)
+            if (reverse.offsets[o + 1] > reverse.offsets[o])
+              {
+                families.owners.push_back(reverse.owners[o]);
+                families.members.insert(families.members.end(),
+                                        reverse.members.begin() +
+                                          reverse.offsets[o],
+                                        reverse.members.begin() +
+                                          reverse.offsets[o + 1]);
+                families.intact.resize(families.members.size(), 1);
+                families.offsets.push_back(families.members.size());
+              }
+        }
       family_of.assign(n_nodes, families.owners.size());
       for (std::size_t o = 0; o < families.owners.size(); ++o)
         family_of[families.owners[o]] = o;
 
       // The model's per-bond data over the whole initial families.
-      region.comm           = comm;
-      region.position       = &x;
-      region.volume         = &volume;
-      region.pd_volume      = &pd_volume;
-      region.horizon        = &horizon;
-      region.has_fe_cells   = &is_fe;
-      region.boundary_area  = &boundary_area;
-      region.families       = &families;
-      region.lambda         = settings.material.lambda();
-      region.mu             = settings.material.mu();
-      region.youngs_modulus = settings.material.youngs_modulus;
-      region.poissons_ratio = settings.material.poissons_ratio;
-      region.plane_strain   = dim == 2 && !settings.material.plane_stress;
-      region.source_file    = settings.source_file;
+      region.comm                 = comm;
+      region.position             = &x;
+      region.volume               = &volume;
+      region.pd_volume            = &pd_volume;
+      region.horizon              = &horizon;
+      region.spacing              = spacing;
+      region.fe_nodes_in_families = settings.fe_nodes_in_families;
+      region.has_fe_cells         = &is_fe;
+      region.boundary_area        = &boundary_area;
+      region.families             = &families;
+      region.lambda               = settings.material.lambda();
+      region.mu                   = settings.material.mu();
+      region.youngs_modulus       = settings.material.youngs_modulus;
+      region.poissons_ratio       = settings.material.poissons_ratio;
+      region.plane_strain         = dim == 2 && !settings.material.plane_stress;
+      region.source_file          = settings.source_file;
       model->initialize(region);
 
       // Bonds crossing a pre-existing crack are cut for good.

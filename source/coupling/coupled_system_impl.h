@@ -61,6 +61,12 @@ namespace pdfem
       make_sparsity();
       void
       make_boundary_conditions();
+      /// The nodes of @p nodes, and the PD nodes within @p layer of any of
+      /// them or of @p points (sorted, unique).
+      std::vector<unsigned int>
+      with_boundary_layer(std::vector<unsigned int>              nodes,
+                          const std::vector<dealii::Point<dim>> &points,
+                          double                                 layer) const;
 
       // ----- assembly (coupled_system_assembly.cc)
       /// The FE-cells part of f_int, once (linear, it never changes), and for
@@ -147,6 +153,12 @@ namespace pdfem
       /// The assembled tangent (direct solvers, "amg", "ilu").
       void
       assemble_tangent();
+      /// @p out = K(@p u) @p w on every DoF, unconstrained (FE cells and
+      /// the model's tangent rows); @p u and @p w ghosted.
+      void
+      tangent_product(const dealii::TrilinosWrappers::MPI::Vector &u,
+                      const dealii::TrilinosWrappers::MPI::Vector &w,
+                      dealii::TrilinosWrappers::MPI::Vector       &out) const;
       /// Add a local block (rows x cols) to @p target; with @p eliminate,
       /// rows and columns of prescribed DoFs are dropped.
       void
@@ -211,6 +223,7 @@ namespace pdfem
       Settings<dim>                                            settings;
       /// The PD term (settings.pd_model, or pdlsm) and what it reads.
       std::shared_ptr<PDModels::Interface<dim>> model;
+      PDModels::Layout                          layout; // model->layout()
       PDModels::Region<dim>                     region;
 
       dealii::hp::FECollection<dim>      fe;        // FE_Q(1)^dim, P1^dim
@@ -222,12 +235,13 @@ namespace pdfem
       dealii::DoFHandler<dim>            node_dofs_handler;
 
       // ----- nodes (replicated: every rank knows every node)
-      unsigned int                                   n_nodes = 0;
-      std::vector<unsigned int>                      vertex_to_node;
-      std::vector<dealii::Point<dim>>                x;
-      std::vector<double>                            volume;    // all cells
-      std::vector<double>                            pd_volume; // PD cells
-      std::vector<double>                            horizon;
+      unsigned int                    n_nodes = 0;
+      std::vector<unsigned int>       vertex_to_node;
+      std::vector<dealii::Point<dim>> x;
+      std::vector<double>             volume;    // all cells
+      std::vector<double>             pd_volume; // PD cells
+      std::vector<double>             horizon;
+      double spacing = 0.; // the largest PD cell's size V^(1/dim)
       std::vector<std::uint8_t>                      is_pd, is_fe;
       std::vector<std::uint8_t>                      no_fail; // bonds kept
       std::vector<unsigned int>                      n_fe_cells;
@@ -240,7 +254,9 @@ namespace pdfem
       // ----- ownership and PD families
       dealii::IndexSet          owned, relevant;
       std::vector<unsigned int> owned_nodes;
-      PD::Families              families; // owners = owned PD nodes
+      /// Owners: the owned PD nodes, then (pairwise models with FE nodes
+      /// in the families) the owned FE nodes bonded to a PD node.
+      PD::Families families;
       /// Per node: its index in families.owners, or families.owners.size()
       /// if it owns no family here.
       std::vector<std::size_t>  family_of;

@@ -68,6 +68,8 @@ namespace pdfem
                                  const std::size_t last) {
         for (std::size_t o = first; o < last; ++o)
           {
+            if (!s.is_pd[s.families.owners[o]])
+              continue; // an FE node's reverse family (pairwise models)
             damage[s.families.owners[o]] = s.model->damage(o, field);
             owner_gradient[o] = s.model->displacement_gradient(o, field);
           }
@@ -106,7 +108,7 @@ namespace pdfem
       // the matrix-free product (equal bond counts) on every thread.
       s.for_each_pd_chunk(fe_cells, pd_owners);
       for (std::size_t o = 0; o < n_owners; ++o)
-        if (!s.decoupled[o])
+        if (!s.decoupled[o] && s.is_pd[s.families.owners[o]])
           add_stress(s.families.owners[o], owner_gradient[o]);
 
       Utilities::MPI::sum(disp, s.comm, disp);

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "coupled_system_impl.h"
 
@@ -49,6 +50,7 @@ namespace pdfem
                 settings.pd_model :
                 std::shared_ptr<PDModels::Interface<dim>>(
                   PDModels::make_pdlsm<dim>(settings.weight_factor)))
+      , layout(model->layout())
       , dofs(tria)
       , node_dofs_handler(tria)
       , solver(settings.linear_solver)
@@ -139,6 +141,7 @@ namespace pdfem
               volume[k] += share;
               if (pd)
                 {
+                  spacing = std::max(spacing, std::pow(cell_volume, 1. / dim));
                   pd_volume[k] += share;
                   is_pd[k] = 1;
                 }
@@ -158,9 +161,12 @@ namespace pdfem
           ++scalar_cell;
         }
 
+      // delta_k = m V_k^(1/dim), or one horizon m h (Layout).
       horizon.resize(n_nodes);
       for (unsigned int k = 0; k < n_nodes; ++k)
-        horizon[k] = settings.horizon_factor * std::pow(volume[k], 1. / dim);
+        horizon[k] =
+          settings.horizon_factor *
+          (layout.uniform_horizon ? spacing : std::pow(volume[k], 1. / dim));
 
       for (unsigned int k = 0; k < n_nodes; ++k)
         if (owned.is_element(node_dof[k][0]))
@@ -262,9 +268,70 @@ namespace pdfem
     }
 
     template <int dim>
+    std::vector<unsigned int>
+    CoupledSystem<dim>::Impl::with_boundary_layer(
+      std::vector<unsigned int>      nodes,
+      const std::vector<Point<dim>> &points,
+      const double                   layer) const
+    {
+      std::vector<Point<dim>> centres = points;
+      for (const unsigned int k : nodes)
+        centres.push_back(x[k]);
+      if (layer > 0. && !centres.empty())
+        {
+          // Bucket the centres in cells of size `layer`: each PD node looks
+          // at the 3^dim cells around its own.
+          Point<dim> lo = centres[0];
+          for (const auto &p : centres)
+            for (unsigned int d = 0; d < dim; ++d)
+              lo[d] = std::min(lo[d], p[d]);
+          const auto cell_of = [&](const Point<dim> &p) {
+            std::array<long, dim> c;
+            for (unsigned int d = 0; d < dim; ++d)
+              c[d] = static_cast<long>(std::floor((p[d] - lo[d]) / layer));
+            return c;
+          };
+          std::map<std::array<long, dim>, std::vector<unsigned int>> buckets;
+          for (unsigned int i = 0; i < centres.size(); ++i)
+            buckets[cell_of(centres[i])].push_back(i);
+          const double r2 = layer * layer * (1. + 1e-10);
+          for (unsigned int k = 0; k < n_nodes; ++k)
+            {
+              if (!is_pd[k])
+                continue;
+              const auto home  = cell_of(x[k]);
+              bool       found = false;
+              for (unsigned int n = 0; n < std::pow(3, dim) && !found; ++n)
+                {
+                  auto         c    = home;
+                  unsigned int code = n;
+                  for (unsigned int d = 0; d < dim; ++d, code /= 3)
+                    c[d] += long(code % 3) - 1;
+                  const auto it = buckets.find(c);
+                  if (it != buckets.end())
+                    for (const unsigned int i : it->second)
+                      if (x[k].distance_square(centres[i]) <= r2)
+                        {
+                          found = true;
+                          break;
+                        }
+                }
+              if (found)
+                nodes.push_back(k);
+            }
+        }
+      std::sort(nodes.begin(), nodes.end());
+      nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+      return nodes;
+    }
+
+    template <int dim>
     void
     CoupledSystem<dim>::Impl::make_boundary_conditions()
     {
+      // Prescribed values act on a layer of PD nodes for nonlocal models.
+      const double layer =
+        layout.dirichlet_layer * settings.horizon_factor * spacing;
       // Nodes of each named set (boundary or point), in input order.
       auto set_of = [&](const BoundaryCondition<dim> &bc) -> unsigned int {
         const auto it = std::find(set_names.begin(), set_names.end(), bc.name);
@@ -284,6 +351,17 @@ namespace pdfem
                                    "nodes of the mesh's elements");
                 nodes.push_back(vertex_to_node[v]);
               }
+          }
+        else if (bc.at_point && layer > 0.)
+          {
+            // The nonlocal layer around the point (Layout::dirichlet_layer).
+            nodes = with_boundary_layer({}, {bc.point}, layer);
+            if (nodes.empty())
+              throw InputError(settings.source_file,
+                               "Boundary conditions/Dirichlet",
+                               "no PD node within the Dirichlet layer (" +
+                                 number(layer) + ") of the point " + bc.name,
+                               "a point inside the PD region");
           }
         else if (bc.at_point)
           {
@@ -324,8 +402,7 @@ namespace pdfem
                   for (const unsigned int v : cell->face(f)->vertex_indices())
                     nodes.push_back(
                       vertex_to_node[cell->face(f)->vertex_index(v)]);
-            std::sort(nodes.begin(), nodes.end());
-            nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+            nodes = with_boundary_layer(std::move(nodes), {}, layer);
           }
         set_names.push_back(bc.name);
         set_nodes.push_back(nodes);
@@ -417,19 +494,14 @@ namespace pdfem
     double
     CoupledSystem<dim>::max_damage() const
     {
-      const PD::Families &f      = impl->families;
-      double              result = 0.;
-      for (std::size_t o = 0; o < f.owners.size(); ++o)
-        {
-          const std::size_t n = f.offsets[o + 1] - f.offsets[o];
-          if (n == 0)
-            continue;
-          const std::size_t intact =
-            std::count(f.intact.begin() + f.offsets[o],
-                       f.intact.begin() + f.offsets[o + 1],
-                       std::uint8_t(1));
-          result = std::max(result, 1. - double(intact) / n);
-        }
+      // The model's damage (by default the fraction of broken bonds) of
+      // the PD nodes at the state of the last residual.
+      const Impl                     &s      = *impl;
+      const PDModels::NodalField<dim> field  = s.nodal_field(s.u_ghosted);
+      double                          result = 0.;
+      for (std::size_t o = 0; o < s.families.owners.size(); ++o)
+        if (s.is_pd[s.families.owners[o]])
+          result = std::max(result, s.model->damage(o, field));
       return Utilities::MPI::max(result, impl->comm);
     }
 

@@ -426,6 +426,14 @@ namespace pdfem
                         "Write nodes.csv: every node's coordinates, "
                         "displacement and stress, sorted by coordinates "
                         "(independent of the number of ranks).");
+      prm.declare_entry(
+        "Patch test",
+        "auto",
+        Selection("auto|true|false"),
+        "The patch test of the PD-FE coupling before the run (summary.json "
+        "patch_test: unit strains on the boundary, the rest solved): auto "
+        "runs it for pairwise PD models (rnp) with FE cells, whose coupling "
+        "by shared nodes is not exact.");
       prm.declare_entry("Print timings",
                         "false",
                         Bool(),
@@ -442,6 +450,7 @@ namespace pdfem
       write_every     = prm.get_integer("Write every");
       write_nodes_csv = prm.get_bool("Write nodes csv");
       print_timings   = prm.get_bool("Print timings");
+      patch_test      = prm.get("Patch test");
       prm.leave_subsection();
     }
 

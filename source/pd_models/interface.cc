@@ -33,6 +33,27 @@ namespace pdfem
     {}
 
     template <int dim>
+    Layout
+    Interface<dim>::layout() const
+    {
+      return Layout();
+    }
+
+    template <int dim>
+    double
+    Interface<dim>::nodal_volume(const unsigned int k) const
+    {
+      return (*region.pd_volume)[k];
+    }
+
+    template <int dim>
+    std::vector<std::pair<std::string, double>>
+    Interface<dim>::constants() const
+    {
+      return {};
+    }
+
+    template <int dim>
     double
     Interface<dim>::damage(const std::size_t o, const NodalField<dim> &) const
     {

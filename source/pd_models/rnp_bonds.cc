@@ -120,16 +120,20 @@ namespace pdfem
       parse_parameters(ParameterHandler &prm, const std::string &file) override
       {
         prm.enter_subsection("RNP");
-        calibration        = prm.get("Calibration");
-        C                  = prm.get_double("C");
-        beta               = prm.get_double("beta");
-        fracture_energy    = prm.get_double("Fracture energy");
-        settings.influence = prm.get("Influence function") == "linear" ?
-                               RNPInfluence::linear :
-                               RNPInfluence::constant;
-        settings.scaling   = prm.get("Force scaling") == "prototype" ?
-                               RNPForceScaling::prototype :
-                               RNPForceScaling::paper;
+        calibration               = prm.get("Calibration");
+        C                         = prm.get_double("C");
+        beta                      = prm.get_double("beta");
+        fracture_energy           = prm.get_double("Fracture energy");
+        settings.influence        = prm.get("Influence function") == "linear" ?
+                                      RNPInfluence::linear :
+                                      RNPInfluence::constant;
+        settings.scaling          = prm.get("Force scaling") == "prototype" ?
+                                      RNPForceScaling::prototype :
+                                      RNPForceScaling::paper;
+        uniform_volumes           = prm.get("Nodal volumes") == "uniform";
+        dirichlet_layer           = prm.get_double("Dirichlet layer");
+        finite_difference_tangent = prm.get("Tangent") == "finite difference";
+        partition                 = prm.get("Interface energy") == "partition";
         prm.leave_subsection();
         source_file = file;
         if (calibration == "constants" && (!(C > 0.) || !(beta > 0.)))
@@ -185,6 +189,56 @@ namespace pdfem
         if (!(settings.horizon > 0.))
           settings.horizon = 1.; // no PD node anywhere: no bond either
         rnp = std::make_unique<RNP<dim>>(settings);
+
+        // The bonds' volumes: the PD cells' shares (every cell's with FE
+        // nodes in the families: an interface node stands for material on
+        // both sides), or h^dim (the paper's lattice); the PD share
+        // w_k = V_k^pd / V_k of each node for the energy partition.
+        const auto        &V_all = *r.volume;
+        const auto        &V_pd  = *r.pd_volume;
+        const unsigned int n     = V_all.size();
+        bond_volume.assign(n, 0.);
+        pd_share.assign(n, 0.);
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            pd_share[k]       = V_all[k] > 0. ? V_pd[k] / V_all[k] : 0.;
+            const bool member = V_pd[k] > 0. || r.fe_nodes_in_families;
+            bond_volume[k] =
+              !member         ? 0. :
+              uniform_volumes ? std::pow(r.spacing, dim) :
+                                (r.fe_nodes_in_families ? V_all[k] : V_pd[k]);
+          }
+        const double shortest = r.spacing > 0. ? r.spacing : 1.;
+        fd_step               = 1e-6 * shortest;
+      }
+
+      Layout
+      layout() const override
+      {
+        Layout l;
+        l.uniform_horizon  = true;
+        l.pairwise         = true;
+        l.dirichlet_layer  = dirichlet_layer;
+        l.nodal_body_force = true;
+        return l;
+      }
+
+      /// The PD material of node k: its bond volume's PD share.
+      double
+      nodal_volume(const unsigned int k) const override
+      {
+        return uniform_volumes ? bond_volume[k] * pd_share[k] :
+                                 (*this->region.pd_volume)[k];
+      }
+
+      std::vector<std::pair<std::string, double>>
+      constants() const override
+      {
+        return {{"C", settings.C},
+                {"beta", settings.beta},
+                {"horizon", settings.horizon},
+                {"spacing", this->region.spacing},
+                {"r_c", 1. / std::sqrt(2. * settings.beta)}};
       }
 
       void
@@ -210,21 +264,11 @@ namespace pdfem
              double                *f_out) const override
       {
         const PD::Families &f = *this->region.families;
-        const auto         &x = *this->region.position;
-        const auto         &V = *this->region.pd_volume;
         for (std::size_t o = begin; o < end; ++o)
           {
-            const unsigned int   k  = f.owners[o];
-            const Tensor<1, dim> uk = u[k];
-            Tensor<1, dim>       sum;
-            for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
-              if (f.intact[j])
-                {
-                  const unsigned int m = f.members[j];
-                  sum += V[m] * rnp->force(x[m] - x[k], u[m] - uk);
-                }
+            const Tensor<1, dim> F = owner_force(f, o, u);
             for (unsigned int c = 0; c < dim; ++c)
-              f_out[dim * o + c] = -V[k] * sum[c];
+              f_out[dim * o + c] = F[c];
           }
       }
 
@@ -235,7 +279,7 @@ namespace pdfem
       {
         const PD::Families  &f  = *this->region.families;
         const auto          &x  = *this->region.position;
-        const auto          &V  = *this->region.pd_volume;
+        const auto          &V  = bond_volume;
         const unsigned int   k  = f.owners[o];
         const Tensor<1, dim> uk = u[k];
         blocks.assign(1, Tensor<2, dim>());
@@ -244,7 +288,10 @@ namespace pdfem
             {
               const unsigned int   m = f.members[j];
               const Tensor<2, dim> B =
-                -V[k] * V[m] * rnp->stiffness(x[m] - x[k], u[m] - uk);
+                finite_difference_tangent ?
+                  difference_block(f, o, u, m) :
+                  -V[k] * V[m] * bond_weight(k, m) *
+                    rnp->stiffness(x[m] - x[k], u[m] - uk);
               blocks.push_back(B);
               blocks[0] -= B;
             }
@@ -296,11 +343,73 @@ namespace pdfem
       }
 
     private:
+      /// The energy partition's weight of bond k-m: (w_k + w_m) / 2, or 1.
+      double
+      bond_weight(const unsigned int k, const unsigned int m) const
+      {
+        return partition ? 0.5 * (pd_share[k] + pd_share[m]) : 1.;
+      }
+
+      /// F_k = -V_k sum_m w_km V_m t(xi, eta) of owner @p o at @p u, with
+      /// node @p shifted moved by @p shift (finite differences).
+      Tensor<1, dim>
+      owner_force(const PD::Families    &f,
+                  const std::size_t      o,
+                  const NodalField<dim> &u,
+                  const Tensor<1, dim>  &shift   = Tensor<1, dim>(),
+                  const unsigned int     shifted = ~0u) const
+      {
+        const auto          &x = *this->region.position;
+        const auto          &V = bond_volume;
+        const unsigned int   k = f.owners[o];
+        const Tensor<1, dim> uk =
+          shifted == k ? Tensor<1, dim>(u[k] + shift) : u[k];
+        Tensor<1, dim> sum;
+        for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+          if (f.intact[j])
+            {
+              const unsigned int   m = f.members[j];
+              const Tensor<1, dim> um =
+                shifted == m ? Tensor<1, dim>(u[m] + shift) : u[m];
+              sum +=
+                V[m] * bond_weight(k, m) * rnp->force(x[m] - x[k], um - uk);
+            }
+        return -V[k] * sum;
+      }
+
+      /// dF_k / du_m by central differences of owner_force() (Tangent =
+      /// finite difference, for comparison with the analytic blocks).
+      Tensor<2, dim>
+      difference_block(const PD::Families    &f,
+                       const std::size_t      o,
+                       const NodalField<dim> &u,
+                       const unsigned int     m) const
+      {
+        Tensor<2, dim> B;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            Tensor<1, dim> h;
+            h[c]                       = fd_step;
+            const Tensor<1, dim> plus  = owner_force(f, o, u, h, m);
+            const Tensor<1, dim> minus = owner_force(f, o, u, -h, m);
+            for (unsigned int i = 0; i < dim; ++i)
+              B[i][c] = (plus[i] - minus[i]) / (2. * fd_step);
+          }
+        return B;
+      }
+
       std::string               calibration = "moduli";
       double                    C = 0., beta = 0., fracture_energy = 0.;
       std::string               source_file;
       RNPSettings               settings;
       std::unique_ptr<RNP<dim>> rnp;
+      bool                      uniform_volumes           = false;
+      bool                      finite_difference_tangent = false;
+      bool                      partition                 = false;
+      double                    dirichlet_layer           = 1.;
+      double                    fd_step                   = 1e-6;
+      /// Per node: the volume its bonds carry, and w_k = V_k^pd / V_k.
+      std::vector<double> bond_volume, pd_share;
     };
   } // namespace PDModels
 } // namespace pdfem

@@ -182,6 +182,7 @@ namespace pdfem
 
         setup.write_nodes_csv = prm.output.write_nodes_csv;
         setup.print_timings   = prm.output.print_timings;
+        setup.patch_test      = prm.output.patch_test;
         auto &timings         = setup.timings;
 
         // ---- output folder
@@ -325,16 +326,6 @@ namespace pdfem
         settings.body_force    = prm.boundary_conditions.body_force;
         settings.linear_solver = prm.linear_solver;
 
-        if (prm.peridynamics.model == "rnp" &&
-            (!prm.boundary_conditions.reaction_group.empty() ||
-             !prm.fracture.no_fail_nodes.empty()))
-          throw InputError(prm.file,
-                           prm.fracture.no_fail_nodes.empty() ?
-                             "Boundary conditions/Reaction group" :
-                             "Fracture/No-fail nodes",
-                           "is not supported by the rnp model",
-                           "empty with Peridynamics/Model = rnp");
-
         // ---- reaction group: indices of the Dirichlet sets (distinct
         // target names, in order of first appearance)
         std::vector<std::string> set_names;
@@ -425,9 +416,6 @@ namespace pdfem
               MPI_Comm                 comm,
               const clock::time_point  start)
       {
-        // Peridynamics/Model: pdlsm is the coupled system's own model; rnp
-        // runs its own system (rnp_scene.cc).
-        const bool rnp     = prm.peridynamics.model == "rnp";
         auto       plugins = make_plugins<dim>(prm.file,
                                          prm.driver,
                                          prm.fracture,
@@ -438,8 +426,6 @@ namespace pdfem
         Setup<dim> setup;
         setup.total_start = start;
         setup_from_prm<dim>(prm, options, comm, setup);
-        if (rnp)
-          return internal::execute_rnp<dim>(setup, prm, options, comm);
         Simulator<dim> simulator(std::move(setup), comm, std::move(plugins));
         simulator.set_quiet(options.quiet);
         return simulator.run();

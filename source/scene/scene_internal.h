@@ -8,7 +8,6 @@
 #include <pdfem/io/parameters.h>
 #include <pdfem/scene/scene.h>
 #include <pdfem/simulator/simulator.h>
-#include <pdfem/simulator/summary.h>
 
 #include <deal.II/distributed/shared_tria.h>
 
@@ -24,7 +23,6 @@ namespace pdfem
   namespace IO
   {
     struct PDLSMFEMModel;
-    class JsonWriter;
   } // namespace IO
 
   namespace Scene
@@ -61,38 +59,6 @@ namespace pdfem
                            MPI_Comm                 comm,
                            Setup<dim>              &setup);
 
-      /// Run a scene with Peridynamics/Model = rnp (rnp_scene.cc): every
-      /// vertex an RNP node, Newton driver with the stability check.
-      template <int dim>
-      int
-      execute_rnp(Setup<dim>              &setup,
-                  const Parameters::Scene &prm,
-                  const RunOptions        &options,
-                  MPI_Comm                 comm);
-
-      /// history.csv's first columns of an RNP run: step, time,
-      /// load_factor, newton_iterations, linear_iterations, residual,
-      /// n_broken_bonds, max_damage, reaction_<set>_<c> for
-      /// @p reaction_sets and, with a reaction group, reaction_RF_<c>.
-      template <int dim>
-      std::vector<std::string>
-      base_history_columns(const std::vector<std::string> &reaction_sets,
-                           bool                            reaction_group);
-
-      /// summary.json's opening members (Summary::write_header()).
-      template <int dim>
-      void
-      write_summary_header(IO::JsonWriter              &json,
-                           const Setup<dim>            &setup,
-                           MPI_Comm                     comm,
-                           const std::string           &exit_state,
-                           const std::string           &message,
-                           const Coupling::ProblemSize &size,
-                           const Coupling::ProblemSize &final_size)
-      {
-        Summary::write_header(
-          json, setup, comm, exit_state, message, size, final_size);
-      }
     } // namespace internal
   }   // namespace Scene
 } // namespace pdfem

@@ -258,6 +258,9 @@ namespace pdfem
     const bool fields_due = setup.write_every > 0 &&
                             record.step % setup.write_every == 0 &&
                             record.step < setup.driver.load_steps;
+    // Nodal results: now if the criterion or the fields need them, else
+    // on a postprocessor's demand (get_nodal_results()).
+    results.reset();
     if (cracks || fields_due)
       update_results(u);
     assessment = Fracture::Assessment();
@@ -318,6 +321,7 @@ namespace pdfem
     const Drivers::SystemInterface::Vector &u_now,
     double)
   {
+    results.reset();
     if (!cracks)
       return false;
     const auto start = clock::now();
@@ -554,6 +558,20 @@ namespace pdfem
   Simulator<dim>::get_load_factor() const
   {
     return impl->load_factor;
+  }
+
+  template <int dim>
+  const Drivers::StabilityReport *
+  Simulator<dim>::get_last_stability_check() const
+  {
+    return impl->last_check.get();
+  }
+
+  template <int dim>
+  std::ostream *
+  Simulator<dim>::get_progress_stream() const
+  {
+    return impl->progress;
   }
 
   template <int dim>

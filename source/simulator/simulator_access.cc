@@ -119,6 +119,20 @@ namespace pdfem
   }
 
   template <int dim>
+  const Drivers::StabilityReport *
+  SimulatorAccess<dim>::get_last_stability_check() const
+  {
+    return get_simulator().get_last_stability_check();
+  }
+
+  template <int dim>
+  std::ostream *
+  SimulatorAccess<dim>::get_progress_stream() const
+  {
+    return get_simulator().get_progress_stream();
+  }
+
+  template <int dim>
   const Fracture::CrackGrowth<dim> *
   SimulatorAccess<dim>::get_cracks() const
   {

@@ -81,6 +81,18 @@ namespace pdfem
       const auto &model = coupled->pd_model();
       return !model.linear() && model.symmetric() ? coupled.get() : nullptr;
     }
+    /// d r / d t of loads linear in t (CoupledSystem::load_derivative()):
+    /// for arc length, and for the Newton driver under hard loading.
+    Drivers::NewtonDriver::LoadDerivative
+    load_derivative(const bool arc_length) override
+    {
+      return coupled->load_derivative(!arc_length);
+    }
+    void
+    after_stability_check(const Drivers::StabilityReport &report) override
+    {
+      last_check = std::make_unique<Drivers::StabilityReport>(report);
+    }
     void
     initial_velocity(Drivers::SystemInterface::Vector &v0) override;
     Drivers::GrowthCheck
@@ -139,10 +151,12 @@ namespace pdfem
     std::unique_ptr<Coupling::NodalResults<dim>>              results;
     Fracture::Assessment                                      assessment;
     Drivers::StepRecord                                       step_record;
-    Drivers::DynamicRecord                                    time_step_record;
-    Coupling::ProblemSize                                     initial_size;
-    double                                                    load_factor = 0.;
-    unsigned int                                              n_steps     = 0;
+    /// The last stability check (null: none yet).
+    std::unique_ptr<Drivers::StabilityReport> last_check;
+    Drivers::DynamicRecord                    time_step_record;
+    Coupling::ProblemSize                     initial_size;
+    double                                    load_factor = 0.;
+    unsigned int                              n_steps     = 0;
     /// Dynamic runs: the steps to the end time (once the step is known).
     unsigned int                          n_total_steps = 0;
     std::chrono::steady_clock::time_point run_start;

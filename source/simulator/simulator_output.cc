@@ -36,6 +36,14 @@ namespace pdfem
               << " interface), " << size.n_dofs << " DoFs, " << size.n_bonds
               << " bonds, " << Utilities::MPI::n_mpi_processes(comm)
               << " rank(s), driver " << setup.driver.type << std::endl;
+    const auto constants = coupled->pd_model().constants();
+    if (!constants.empty())
+      {
+        *progress << "  PD model:";
+        for (const auto &[name, value] : constants)
+          *progress << " " << name << " = " << value;
+        *progress << std::endl;
+      }
   }
 
   template <int dim>
@@ -120,6 +128,14 @@ namespace pdfem
     for (const auto &p : postprocessors)
       p->write_final(json);
     json.end_object();
+    const auto constants = coupled->pd_model().constants();
+    if (!constants.empty())
+      {
+        json.begin_object("pd_model");
+        for (const auto &[name, value] : constants)
+          json.value(name, value);
+        json.end_object();
+      }
     for (const auto &p : postprocessors)
       p->write_sections(json);
 

@@ -9,6 +9,7 @@
 //   same E).
 #include <pdfem/base/exceptions.h>
 #include <pdfem/coupling/coupled_system.h>
+#include <pdfem/coupling/rnp_system.h>
 #include <pdfem/pd/families.h>
 #include <pdfem/pd_models/interface.h>
 
@@ -354,7 +355,10 @@ namespace
     const unsigned int centre = plate.system->nearest_node(Point<2>(0.5, 0.5));
     const double       u_centre = plate.system->node_displacement(u, centre)[0];
     EXPECT_NEAR(u_centre / 1e-4, 0.5, 0.05);
-    EXPECT_NEAR(u_centre, 4.779460927e-05, 1e-9 * 4.78e-5)
+    // Regression of the 1-rank value, with the rnp model's layout (one
+    // horizon 3 h, the boundary columns held within a horizon: Dirichlet
+    // layer = 1); 1 and 2 ranks agree.
+    EXPECT_NEAR(u_centre, 4.8557536778e-05, 1e-9 * 4.86e-5)
       << "the 1-rank value (regression: 1 and 2 ranks agree)";
     Drivers::StabilityReport report = plate.system->check_stability();
     EXPECT_FALSE(report.singular);
@@ -366,5 +370,87 @@ namespace
     plate.system->residual(u, 0.3, r, true);
     report = plate.system->check_stability();
     EXPECT_GT(report.n_negative, 0u);
+  }
+
+  // The rnp plugin in the parallel coupled system against the serial
+  // lattice Coupling::RNPSystem (written separately, specs/000): the same
+  // nodes, volumes and horizon give the same internal forces, softened
+  // bonds included, on a jittered mesh with a pre-crack (1 and 2 ranks:
+  // unit.np2.CoupledRNP).
+  TEST(CoupledRNP, ForcesEqualTheSerialReferenceLattice)
+  {
+    parallel::shared::Triangulation<2> tria(MPI_COMM_WORLD);
+    GridGenerator::subdivided_hyper_cube(tria, 8);
+    GridTools::distort_random(0.15, tria, false, 3);
+    Coupling::Settings<2> settings;
+    settings.material.youngs_modulus = 1e3;
+    settings.material.poissons_ratio = 1. / 3.;
+    settings.material.plane_stress   = true;
+    settings.horizon_factor          = 3.;
+    settings.pd_model                = make_model("rnp",
+                                   {{"RNP/Calibration", "constants"},
+                                                   {"RNP/C", "1000"},
+                                                   {"RNP/beta", "30"},
+                                                   {"RNP/Dirichlet layer", "0"}});
+    settings.cracks                  = {
+                       Mesh::Crack<2>{{Point<2>(0., 0.52), Point<2>(0.5, 0.52)}}};
+    settings.linear_solver.type = "direct";
+    Coupling::CoupledSystem<2> system(
+      tria, std::vector<bool>(tria.n_active_cells(), true), settings);
+
+    // A displacement that softens bonds (d > 1) near the crack's faces.
+    Drivers::SystemInterface::Vector u, r;
+    system.initialize_vector(u);
+    system.interpolate({"0.02*sin(3*x + 2*y)", "0.3*(y > 0.52 ? 1 : -1)*x"},
+                       "test",
+                       u);
+    system.residual(u, 0., r, false);
+    EXPECT_GT(system.max_damage(), 1.);
+
+    // The reference: x, V = V^pd, one horizon m h from the same nodes.
+    const unsigned int    n = system.size().n_nodes;
+    std::vector<Point<2>> x(n);
+    std::vector<double>   V(n), u_ref(2 * n);
+    double                horizon = 0.;
+    for (const auto &[name, value] : system.pd_model().constants())
+      if (name == "horizon")
+        horizon = value;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        x[k]                 = system.node_position(k);
+        const Tensor<1, 2> v = system.node_displacement(u, k);
+        u_ref[2 * k]         = v[0];
+        u_ref[2 * k + 1]     = v[1];
+      }
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        V[system.nearest_node(cell->vertex(v))] += cell->measure() / 4.;
+    PDModels::RNPSettings s;
+    s.C                          = 1000.;
+    s.beta                       = 30.;
+    s.horizon                    = horizon;
+    const auto             crack = settings.cracks;
+    Coupling::RNPSystem<2> reference(x,
+                                     V,
+                                     s,
+                                     [&crack](const Point<2> &a,
+                                              const Point<2> &b) {
+                                       return Mesh::cut_by_any<2>(crack, a, b);
+                                     },
+                                     {});
+    std::vector<double>    f;
+    reference.internal_force(u_ref, f);
+    double scale = 0., difference = 0.;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const Tensor<1, 2> rk = system.node_displacement(r, k); // -f_int
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            scale      = std::max(scale, std::abs(f[2 * k + c]));
+            difference = std::max(difference, std::abs(rk[c] + f[2 * k + c]));
+          }
+      }
+    EXPECT_GT(scale, 0.);
+    EXPECT_LT(difference, 1e-10 * scale);
   }
 } // namespace

@@ -100,6 +100,22 @@ namespace pdfem
       std::string source_file;
     };
 
+    /**
+     * The patch test of the coupling (CoupledSystem::patch_test()): how far
+     * the linearised coupled operator is from reproducing affine fields.
+     */
+    struct PatchTest
+    {
+      /// Unit strain modes tested (0: no FE cells, nothing to test).
+      unsigned int strain_modes = 0;
+      /// Nodes held at the affine field.
+      unsigned int held_nodes = 0;
+      /// max_k |u_k - eps (x_k - x_c)| / max_k |eps (x_k - x_c)|.
+      double max_relative_error = 0.;
+      /// max over free nodes |K u_affine|_k / (|sigma| h^(dim-1)).
+      double max_relative_ghost_force = 0.;
+    };
+
     /** Counts that summary.json reports. */
     struct ProblemSize
     {
@@ -299,6 +315,34 @@ namespace pdfem
       Drivers::StabilityReport
       check_stability() override;
 
+      /**
+       * d r / d t for loads linear in the load factor t, f_ext(t) = t q
+       * and prescribed values u_p(t) = u_p(0) + t w:
+       *
+       *   d r / d t = q - K_fp(u) w   on the free DoFs (0 on held ones),
+       *
+       * K_fp the tangent's columns of the prescribed DoFs at u (the FE
+       * cells and the model's tangent rows, unconstrained). The arc-length
+       * continuation needs it, and the Newton driver's snap-back
+       * continuation under hard loading. Empty if the loads are not linear
+       * in t, or if @p hard_loading_only and w = 0. Collective.
+       */
+      Drivers::NewtonDriver::LoadDerivative
+      load_derivative(bool hard_loading_only);
+
+      /**
+       * The patch test of the PD-FE coupling (theory.md §8.3): for each
+       * unit strain mode eps, the affine field u = eps (x - x_c) held on
+       * the boundary's nodes and on the PD nodes within a horizon of them
+       * (so that the PD surface effect is not counted), the rest solved
+       * with the tangent at u = 0. An exact coupling reproduces the affine
+       * field; the error and the ghost forces K u_affine on the free nodes
+       * measure the coupling's. Runs only with FE and PD cells; leaves the
+       * system's state as it was. Collective.
+       */
+      PatchTest
+      patch_test();
+
       /// Global counts (the same on every rank).
       ProblemSize
       size() const;
@@ -313,7 +357,8 @@ namespace pdfem
       const dealii::TrilinosWrappers::SparseMatrix &
       preconditioner_matrix();
 
-      /// The largest PD node damage (fraction of broken bonds), over all ranks.
+      /// The largest PD node damage (the model's: by default the fraction
+      /// of broken bonds) at the last residual's state, over all ranks.
       double
       max_damage() const;
 

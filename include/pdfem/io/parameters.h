@@ -160,6 +160,7 @@ namespace pdfem
       unsigned int write_every     = 0; // VTU every n steps; 0: last only
       bool         write_nodes_csv = false;
       bool         print_timings   = false;
+      std::string  patch_test      = "auto"; // auto|true|false
 
       static void
       declare(dealii::ParameterHandler &prm);

@@ -14,6 +14,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <mpi.h>
@@ -50,6 +51,12 @@ namespace pdfem
       const std::vector<double> *pd_volume = nullptr;
       /// The horizon delta_k of every node (0 for FE nodes).
       const std::vector<double> *horizon = nullptr;
+      /// The spacing h of the PD region: the largest PD cell's size
+      /// V_cell^(1/dim).
+      double spacing = 0.;
+      /// Peridynamics/Family members = all nodes: FE nodes within a horizon
+      /// are family members (and, for pairwise models, owners).
+      bool fe_nodes_in_families = false;
       /// 1 if the node belongs to an FE cell.
       const std::vector<std::uint8_t> *has_fe_cells = nullptr;
       /// s_k = int_{S_pd} N_k n dS: a node's share of the PD region's
@@ -62,6 +69,32 @@ namespace pdfem
       bool   plane_strain = false;
       /// The input file, named in error messages.
       std::string source_file;
+    };
+
+    /**
+     * What a model asks of the coupled system's discretisation; the
+     * defaults are those of the collocated PDLSM (pdlsm).
+     */
+    struct Layout
+    {
+      /// One horizon for the whole region, delta = m h with h the largest
+      /// PD cell size (Region::spacing), instead of each node's own
+      /// delta_k = m V_k^(1/dim): bond models whose micromodulus assumes
+      /// one horizon (specs/000 eq. (11)).
+      bool uniform_horizon = false;
+      /// Pairwise bonds that act on both their nodes: with FE nodes in the
+      /// families, the FE nodes within a horizon of PD nodes own families
+      /// too (of those PD nodes only), so that every bond's force reaches
+      /// both ends.
+      bool pairwise = false;
+      /// Prescribed displacements act on every PD node within this many
+      /// horizons of a Dirichlet boundary or point (the nonlocal boundary
+      /// layer, specs/000 §4.2); 0: the boundary's own nodes.
+      double dirichlet_layer = 0.;
+      /// The body force on PD nodes as b(x_k) V_k with the model's nodal
+      /// volumes (a particle discretisation) instead of integrated over the
+      /// PD cells with the FE shape functions.
+      bool nodal_body_force = false;
     };
 
     /**
@@ -123,6 +156,11 @@ namespace pdfem
       virtual void
       parse_parameters(dealii::ParameterHandler &prm, const std::string &file);
 
+      /// What the model needs of the discretisation (known after
+      /// parse_parameters(), before initialize()). By default: PDLSM's.
+      virtual Layout
+      layout() const;
+
       /**
        * Bind to @p region and compute the per-bond data of every family
        * over its initial (uncut) members. Collective over region.comm;
@@ -183,6 +221,20 @@ namespace pdfem
        */
       virtual double
       damage(std::size_t o, const NodalField<dim> &u) const;
+
+      /**
+       * The PD material volume of node @p k (after initialize()): its mass
+       * and, with Layout::nodal_body_force, its body force b(x_k) V_k. By
+       * default its share of the PD cells, V_k^pd.
+       */
+      virtual double
+      nodal_volume(unsigned int k) const;
+
+      /// Named constants of the model for summary.json's "pd_model"
+      /// section and the run's header (after initialize()). By default
+      /// none.
+      virtual std::vector<std::pair<std::string, double>>
+      constants() const;
 
     protected:
       /// The region of initialize().

@@ -8,6 +8,7 @@
 #include <pdfem/pd_models/interface.h>
 
 #include <chrono>
+#include <iosfwd>
 #include <map>
 #include <memory>
 #include <string>
@@ -69,6 +70,9 @@ namespace pdfem
     unsigned int write_every     = 0;
     bool         write_nodes_csv = false;
     bool         print_timings   = false;
+    /// The coupling's patch test before the run: "auto" (pairwise PD
+    /// models with FE cells), "true" or "false".
+    std::string patch_test = "auto";
     /// Dirichlet sets whose reactions are also summed as "RF".
     std::vector<unsigned int> reaction_group;
     /// Remarks printed on stderr before the run.
@@ -209,6 +213,10 @@ namespace pdfem
     get_time_step_record() const;
     double
     get_load_factor() const;
+    const Drivers::StabilityReport *
+    get_last_stability_check() const;
+    std::ostream *
+    get_progress_stream() const;
     const Fracture::CrackGrowth<dim> *
     get_cracks() const;
     const Fracture::Criterion<dim> *
@@ -271,6 +279,13 @@ namespace pdfem
     /// The load factor t (dynamic runs: time / end time).
     double
     get_load_factor() const;
+    /// The last stability check of the Newton or arc-length driver
+    /// (nullptr: none yet, or none in this run).
+    const Drivers::StabilityReport *
+    get_last_stability_check() const;
+    /// Where progress lines go (nullptr: nowhere, quiet or not rank 0).
+    std::ostream *
+    get_progress_stream() const;
     /// The cracks (nullptr without a criterion).
     const Fracture::CrackGrowth<dim> *
     get_cracks() const;
