@@ -348,36 +348,31 @@ namespace pdfem
         nodal_field(model->linear() ? u_ghosted : u_tangent);
       std::vector<global_dof_index> rows(dim);
       std::vector<double>           K;
-      std::vector<Tensor<2, dim>>   blocks;
-      for (std::size_t o = 0; o < families.owners.size(); ++o)
-        {
-          if (decoupled[o])
-            continue;
-          const unsigned int k = families.owners[o];
-          model->tangent_row(o, field, blocks);
-          const std::size_t n_cols = dim * blocks.size();
-          K.assign(dim * n_cols, 0.);
-          cols.resize(n_cols);
-          for (unsigned int c = 0; c < dim; ++c)
-            rows[c] = cols[c] = node_dof[k][c];
-          std::size_t block = 0;
-          for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
-               ++j)
-            if (families.intact[j])
-              {
-                ++block;
-                for (unsigned int c = 0; c < dim; ++c)
-                  cols[dim * block + c] = node_dof[families.members[j]][c];
-              }
-          AssertThrow(block + 1 == blocks.size(),
-                      ExcMessage("a PD model's tangent row must have one "
-                                 "block per intact bond and its own"));
-          for (std::size_t b = 0; b < blocks.size(); ++b)
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
-                K[i * n_cols + dim * b + j] = blocks[b][i][j];
-          add_to_matrix(matrix, rows, cols, K);
-        }
+      for_each_tangent_row(field, [&](const std::size_t o, const auto &blocks) {
+        const unsigned int k      = families.owners[o];
+        const std::size_t  n_cols = dim * blocks.size();
+        K.assign(dim * n_cols, 0.);
+        cols.resize(n_cols);
+        for (unsigned int c = 0; c < dim; ++c)
+          rows[c] = cols[c] = node_dof[k][c];
+        std::size_t block = 0;
+        for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
+             ++j)
+          if (families.intact[j])
+            {
+              ++block;
+              for (unsigned int c = 0; c < dim; ++c)
+                cols[dim * block + c] = node_dof[families.members[j]][c];
+            }
+        AssertThrow(block + 1 == blocks.size(),
+                    ExcMessage("a PD model's tangent row must have one "
+                               "block per intact bond and its own"));
+        for (std::size_t b = 0; b < blocks.size(); ++b)
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              K[i * n_cols + dim * b + j] = blocks[b][i][j];
+        add_to_matrix(matrix, rows, cols, K);
+      });
       add_held_diagonal(matrix);
       matrix.compress(VectorOperation::add);
     }

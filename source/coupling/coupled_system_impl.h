@@ -153,6 +153,21 @@ namespace pdfem
       /// The assembled tangent (direct solvers, "amg", "ilu").
       void
       assemble_tangent();
+      /// use(o, blocks) with the model's tangent row of every owner o that
+      /// is not decoupled, at @p field.
+      template <typename Use>
+      void
+      for_each_tangent_row(const PDModels::NodalField<dim> &field,
+                           const Use                       &use) const
+      {
+        std::vector<dealii::Tensor<2, dim>> blocks;
+        for (std::size_t o = 0; o < families.owners.size(); ++o)
+          if (!decoupled[o])
+            {
+              model->tangent_row(o, field, blocks);
+              use(o, blocks);
+            }
+      }
       /// @p out = K(@p u) @p w on every DoF, unconstrained (FE cells and
       /// the model's tangent rows); @p u and @p w ghosted.
       void

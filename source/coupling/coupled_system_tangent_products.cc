@@ -98,22 +98,17 @@ namespace pdfem
       fe_matrix.vmult(out, w_owned);
       const PDModels::NodalField<dim> field = nodal_field(u);
       const PDModels::NodalField<dim> wf    = nodal_field(w);
-      std::vector<Tensor<2, dim>>     blocks;
-      for (std::size_t o = 0; o < families.owners.size(); ++o)
-        {
-          if (decoupled[o])
-            continue;
-          const unsigned int k = families.owners[o];
-          model->tangent_row(o, field, blocks);
-          Tensor<1, dim> Kw = blocks[0] * wf[k];
-          std::size_t    b  = 0;
-          for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
-               ++j)
-            if (families.intact[j])
-              Kw += blocks[++b] * wf[families.members[j]];
-          for (unsigned int c = 0; c < dim; ++c)
-            out[node_dof[k][c]] += Kw[c];
-        }
+      for_each_tangent_row(field, [&](const std::size_t o, const auto &blocks) {
+        const unsigned int k  = families.owners[o];
+        Tensor<1, dim>     Kw = blocks[0] * wf[k];
+        std::size_t        b  = 0;
+        for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
+             ++j)
+          if (families.intact[j])
+            Kw += blocks[++b] * wf[families.members[j]];
+        for (unsigned int c = 0; c < dim; ++c)
+          out[node_dof[k][c]] += Kw[c];
+      });
       out.compress(VectorOperation::add);
     }
 
