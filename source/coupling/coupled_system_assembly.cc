@@ -63,47 +63,6 @@ namespace pdfem
     }
 
     template <int dim>
-    template <typename FEValuesType>
-    void
-    CoupledSystem<dim>::Impl::cell_stiffness(const FEValuesType  &fv,
-                                             std::vector<double> &K) const
-    {
-      // K_ij = int lambda div(phi_i) div(phi_j) + 2 mu eps(phi_i):eps(phi_j).
-      // The vector elements are primitive: phi_i = N_i e_{c_i}, so with
-      // g = grad N: div phi_i = g_i[c_i] and
-      // 2 eps_i : eps_j = g_i . g_j delta_{c_i c_j} + g_i[c_j] g_j[c_i].
-      const double       lambda  = settings.material.lambda();
-      const double       mu      = settings.material.mu();
-      const auto        &fe_cell = fv.get_fe();
-      const unsigned int n       = fv.dofs_per_cell;
-      static thread_local std::vector<unsigned int> comp;
-      comp.resize(n);
-      for (unsigned int i = 0; i < n; ++i)
-        comp[i] = fe_cell.system_to_component_index(i).first;
-      K.assign(n * n, 0.);
-      for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
-        {
-          const double JxW = fv.JxW(q);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const Tensor<1, dim> gi = fv.shape_grad(i, q) * JxW;
-              for (unsigned int j = i; j < n; ++j)
-                {
-                  const Tensor<1, dim> &gj = fv.shape_grad(j, q);
-                  double                v = lambda * gi[comp[i]] * gj[comp[j]] +
-                             mu * gi[comp[j]] * gj[comp[i]];
-                  if (comp[i] == comp[j])
-                    v += mu * (gi * gj);
-                  K[i * n + j] += v;
-                }
-            }
-        }
-      for (unsigned int i = 0; i < n; ++i)
-        for (unsigned int j = 0; j < i; ++j)
-          K[i * n + j] = K[j * n + i];
-    }
-
-    template <int dim>
     double
     CoupledSystem<dim>::Impl::held_diagonal(const global_dof_index i) const
     {
@@ -171,7 +130,9 @@ namespace pdfem
         if (cell->is_locally_owned() && select(cell->active_cell_index()))
           {
             fe_values.reinit(cell);
-            cell_stiffness(fe_values.get_present_fe_values(), K);
+            FE::cell_stiffness(fe_values.get_present_fe_values(),
+                               settings.material,
+                               K);
             local_dofs.resize(cell->get_fe().n_dofs_per_cell());
             cell->get_dof_indices(local_dofs);
             use(cell->active_cell_index(), local_dofs, K);

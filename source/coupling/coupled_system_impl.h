@@ -74,7 +74,7 @@ namespace pdfem
       void
       assemble_fe_matrix();
       /// use(cell index, local DoFs, K) for every locally owned cell with
-      /// select(cell index), K its Q1/P1 stiffness (cell_stiffness()).
+      /// select(cell index), K its Q1/P1 stiffness (FE::cell_stiffness()).
       template <typename Select, typename Use>
       void
       for_each_cell_stiffness(const Select &select, const Use &use) const;
@@ -182,10 +182,6 @@ namespace pdfem
                     const std::vector<global_dof_index>    &cols,
                     const std::vector<double>              &values,
                     bool eliminate = true) const;
-      /// Q1/P1 elasticity stiffness of one cell (row-major, n x n).
-      template <typename FEValuesType>
-      void
-      cell_stiffness(const FEValuesType &fv, std::vector<double> &K) const;
       /// Diagonal entries of prescribed and decoupled DoFs in @p target,
       /// except those @p already_added marks (by owned-local index).
       /// Returns the number added.

@@ -2,6 +2,14 @@
 #ifndef PDFEM_FE_ELASTIC_MATERIAL_H
 #define PDFEM_FE_ELASTIC_MATERIAL_H
 
+#include <vector>
+
+namespace dealii
+{
+  template <int dim, int spacedim>
+  class FEValues;
+}
+
 namespace pdfem
 {
   namespace FE
@@ -29,6 +37,22 @@ namespace pdfem
       double
       mu() const;
     };
+
+    /**
+     * The elasticity stiffness of one cell, the FE cell term of the
+     * coupled system (Liu & Xin 2021, eq. 26):
+     *
+     *   K_ij = int_cell lambda div(phi_i) div(phi_j)
+     *                   + 2 mu eps(phi_i) : eps(phi_j) dx,
+     *
+     * by the quadrature of @p fv (gradients and JxW), for a primitive
+     * vector element (Q1^dim, P1^dim); row-major n x n into @p K.
+     */
+    template <int dim>
+    void
+    cell_stiffness(const dealii::FEValues<dim, dim> &fv,
+                   const ElasticMaterial            &material,
+                   std::vector<double>              &K);
   } // namespace FE
 } // namespace pdfem
 
