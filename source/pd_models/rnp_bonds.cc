@@ -96,21 +96,28 @@ namespace pdfem
      * The RNP bond model as a term of the coupled system (specs/000 eqs.
      * (5), (8), (11)-(12), (27), (34) corrected; PDModels::RNP):
      *
-     *   F_k = -V_k sum_m V_m t(xi_km, eta_km),   eta = u_m - u_k,
+     *   F_k = -V_k sum_m w_km V_m t(xi_km, eta_km),   eta = u_m - u_k,
      *
-     * over the intact bonds, V the nodes' PD volumes (V_k^pd: an FE node
-     * carries no bond energy). It is the gradient of the energy
-     * sum_k V_k sum_m |xi| W(S) V_m / 2, so its tangent
+     * over the intact bonds. V are the bond volumes: the PD cells' shares
+     * V_k^pd, every cell's share with FE nodes in the families (an
+     * interface node stands for material on both sides), or h^dim
+     * (`Nodal volumes = uniform`, the paper's lattice); w_km = 1, or
+     * (w_k + w_m) / 2 with w_k = V_k^pd / V_k (`Interface energy =
+     * partition`, theory.md §8.3). It is the gradient of the energy
+     * sum_k V_k sum_m w_km |xi| W(S) V_m / 2, so its tangent
      *
-     *   dF_k/du_m = -V_k V_m a(xi, eta),  dF_k/du_k = sum_m V_k V_m a
+     *   dF_k/du_m = -V_k V_m w_km a(xi, eta),  dF_k/du_k = -sum_m dF_k/du_m
      *
-     * is symmetric (families are symmetric among PD nodes). The horizon
-     * epsilon of the bond constant c = 2 / (eps^(d+1) omega_d) is the
-     * largest horizon of the PD nodes (the mesh spacing times the horizon
-     * factor on a uniform mesh). C and beta are given or calibrated from
-     * E and G_c (specs/000 §1.5, corrected). Nonlinear: bonds soften past
-     * r_c = 1 / sqrt(2 beta); the Newton drivers check the tangent's
-     * inertia.
+     * is symmetric: the layout (Layout) asks for one horizon, symmetric
+     * families and, with FE nodes in the families, reverse families owned
+     * by those FE nodes, so that every bond acts on both its nodes. The
+     * horizon epsilon of the bond constant c = 2 / (eps^(d+1) omega_d) is
+     * the horizon factor times the largest PD cell size. Prescribed values
+     * act on the PD nodes within `Dirichlet layer` horizons of their
+     * boundary, the body force is b(x_k) V_k. C and beta are given or
+     * calibrated from E and G_c (specs/000 §1.5, corrected). Nonlinear:
+     * bonds soften past r_c = 1 / sqrt(2 beta); the Newton drivers check
+     * the tangent's inertia.
      */
     template <int dim>
     class RNPBonds : public Interface<dim>

@@ -391,7 +391,8 @@ namespace pdfem
       const PDModels::Interface<dim> &
       pd_model() const;
 
-      /// The horizon delta_k of every node (replicated; 0 for FE nodes).
+      /// The horizon delta_k of every node (replicated): m V_k^(1/dim), or
+      /// one m h for all (PDModels::Layout::uniform_horizon).
       const std::vector<double> &
       horizons() const;
 

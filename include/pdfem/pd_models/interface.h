@@ -49,7 +49,8 @@ namespace pdfem
       /// cells only (V_k^pd; 0 for FE nodes).
       const std::vector<double> *volume    = nullptr;
       const std::vector<double> *pd_volume = nullptr;
-      /// The horizon delta_k of every node (0 for FE nodes).
+      /// The horizon delta_k of every node: m V_k^(1/dim), or one m h for
+      /// all (Layout::uniform_horizon).
       const std::vector<double> *horizon = nullptr;
       /// The spacing h of the PD region: the largest PD cell's size
       /// V_cell^(1/dim).
