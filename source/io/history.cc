@@ -14,6 +14,7 @@ namespace pdfem
                      const std::vector<std::string> &columns,
                      const bool                      active)
       : n_columns(columns.size())
+      , columns(columns)
     {
       if (!active)
         return;
@@ -25,15 +26,16 @@ namespace pdfem
       out << std::endl;
     }
 
-    void
+    bool
     History::add_row(const std::vector<double> &values)
     {
       if (!out.is_open())
-        return;
+        return true;
       out << std::setprecision(std::numeric_limits<double>::max_digits10);
       for (std::size_t c = 0; c < values.size() && c < n_columns; ++c)
         out << (c ? "," : "") << values[c];
       out << std::endl;
+      return static_cast<bool>(out);
     }
 
     std::string

@@ -2,6 +2,7 @@
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
 #include <pdfem/coupling/coupled_system.h>
+#include <pdfem/io/atomic_file.h>
 #include <pdfem/io/field_output.h>
 #include <pdfem/io/history.h>
 #include <pdfem/io/json_writer.h>
@@ -13,6 +14,7 @@
 #include <pdfem/simulator/simulator.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
 
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -408,6 +410,37 @@ namespace pdfem
         return simulator.run();
       }
 
+      /// parameters.prm in @p out_dir (rank 0): the parameters as read, every
+      /// --set applied, the mesh file made absolute, so that `pdfem
+      /// out_dir/parameters.prm` repeats the run.
+      void
+      save_parameters(const Parameters::Scene &prm,
+                      const std::string       &out_dir,
+                      MPI_Comm                 comm)
+      {
+        std::string error;
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          {
+            ParameterHandler &handler = *prm.handler;
+            handler.enter_subsection("Mesh");
+            handler.set("Input file",
+                        fs::absolute(resolve(prm.mesh.input_file, prm.base_dir))
+                          .lexically_normal()
+                          .string());
+            handler.leave_subsection();
+            error = IO::write_atomically(
+              out_dir + "/parameters.prm", [&](std::ostream &out) {
+                handler.print_parameters(out, ParameterHandler::ShortPRM);
+              });
+          }
+        error = Utilities::MPI::broadcast(comm, error, 0);
+        if (!error.empty())
+          throw InputError(prm.file,
+                           "Output/Directory",
+                           error,
+                           "a writable folder with free space");
+      }
+
       /// A .prm scene.
       template <int dim>
       int
@@ -426,6 +459,7 @@ namespace pdfem
         Setup<dim> setup;
         setup.total_start = start;
         setup_from_prm<dim>(prm, options, comm, setup);
+        save_parameters(prm, setup.out_dir, comm);
         Simulator<dim> simulator(std::move(setup), comm, std::move(plugins));
         simulator.set_quiet(options.quiet);
         return simulator.run();

@@ -2,6 +2,7 @@
 // The Simulator: one run of any driver, criterion and postprocessors.
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/interrupts.h>
 #include <pdfem/fracture/crack_growth.h>
 #include <pdfem/simulator/summary.h>
 
@@ -199,6 +200,16 @@ namespace pdfem
       for (const auto &c : p->history_columns())
         columns.push_back(c);
     columns.push_back("wall_seconds");
+    // From here on the run writes: a killed run leaves summary.json
+    // saying it did not end.
+    const std::string marker_error =
+      Utilities::MPI::broadcast(comm, write_running_marker(), 0);
+    if (!marker_error.empty())
+      throw InputError(setup.file,
+                       "Output/Directory",
+                       marker_error,
+                       "a writable folder with free space");
+
     history = std::make_unique<IO::History>(setup.out_dir + "/history.csv",
                                             columns,
                                             root);
@@ -214,7 +225,23 @@ namespace pdfem
     for (const auto &p : postprocessors)
       p->history_values(row);
     row.push_back(seconds_since(setup.total_start));
-    history->add_row(row);
+    // No NaN is written: a non-finite value ends the run (the same on
+    // every rank: the row's values are global).
+    for (std::size_t c = 0; c < row.size(); ++c)
+      if (!std::isfinite(row[c]))
+        throw RunFailure("diverged",
+                         "history.csv column '" + history->column(c) +
+                           "' is not finite (NaN or Inf) at step " +
+                           number(row[0]) +
+                           ": check the loads, the initial velocity and the "
+                           "time step");
+    // Rank 0 writes; every rank learns whether it could.
+    const int written = history->add_row(row) ? 1 : 0;
+    if (Utilities::MPI::min(written, comm) == 0)
+      throw RunFailure("io error",
+                       "writing " + setup.out_dir +
+                         "/history.csv failed (disk full, or the folder no "
+                         "longer writable)");
   }
 
   template <int dim>
@@ -312,7 +339,22 @@ namespace pdfem
         coupled->break_bonds(grown);
         cracks->attach(*coupled);
       }
+    stop_if_interrupted();
     return check;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::Impl::stop_if_interrupted(const int received) const
+  {
+    const int s =
+      received >= 0 ? received : StopOnSignals::stop_requested(comm);
+    if (s != 0)
+      throw RunFailure("interrupted",
+                       std::string(StopOnSignals::name(s)) +
+                         " received: stopped after step " +
+                         std::to_string(n_steps) + " (load factor " +
+                         number(load_factor) + "), the state the outputs hold");
   }
 
   template <int dim>
@@ -354,7 +396,18 @@ namespace pdfem
       }
     for (const auto &p : postprocessors)
       p->every_time_step();
-    const bool last_step = record.step >= n_total_steps;
+    if (!std::isfinite(record.kinetic_energy) ||
+        !std::isfinite(record.strain_energy) ||
+        !std::isfinite(record.external_work))
+      throw RunFailure("diverged",
+                       "the state is not finite (NaN or Inf) at step " +
+                         std::to_string(record.step) +
+                         ", t = " + number(record.time) +
+                         " s: check the loads, the initial velocity and the "
+                         "time step");
+    // An interrupted run records the step it stops at.
+    const int  stop      = StopOnSignals::stop_requested(comm);
+    const bool last_step = record.step >= n_total_steps || stop != 0;
     if (record.step % prm.history_interval != 0 && !last_step &&
         !(record.energy_error > prm.energy_tolerance) &&
         std::isfinite(record.energy_error))
@@ -373,6 +426,7 @@ namespace pdfem
                      double(s.n_broken_bonds),
                      coupled->max_damage()});
     print_dynamic_progress(record, s.n_broken_bonds);
+    stop_if_interrupted(stop);
   }
 
   // ------------------------------------------------------------ Simulator
@@ -448,6 +502,8 @@ namespace pdfem
   Simulator<dim>::run()
   {
     Impl &s = *impl;
+    // SIGINT/SIGTERM end the run after the current step, outputs written.
+    const StopOnSignals stop_on_signals;
     s.set_up();
     s.run_start = clock::now();
     try
@@ -480,10 +536,16 @@ namespace pdfem
     for (const auto &p : s.postprocessors)
       p->finish();
     s.output_time += seconds_since(start);
-    s.setup.timings["output"] = s.output_time;
-    s.setup.timings["total"]  = seconds_since(s.setup.total_start);
-    s.write_summary();
+    s.setup.timings["output"]       = s.output_time;
+    s.setup.timings["total"]        = seconds_since(s.setup.total_start);
+    const std::string summary_error = s.write_summary();
     s.print_end();
+    if (!summary_error.empty())
+      {
+        std::cerr << "pdfem: error: summary.json: " << summary_error
+                  << std::endl;
+        return 3;
+      }
     return s.exit_state == "completed" || s.exit_state == "separated" ? 0 : 3;
   }
 

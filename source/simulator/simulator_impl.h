@@ -112,6 +112,10 @@ namespace pdfem
     /// postprocessors' and the wall time.
     void
     add_history_row(const std::vector<double> &base);
+    /// Throw RunFailure "interrupted" if a stop signal was @p received (a
+    /// signal number, 0: none; -1: ask every rank now). Collective.
+    void
+    stop_if_interrupted(int received = -1) const;
     /// Nodal results of the current solution.
     void
     update_results(const Drivers::SystemInterface::Vector &u_now);
@@ -130,8 +134,18 @@ namespace pdfem
     void
     print_dynamic_progress(const Drivers::DynamicRecord &record,
                            unsigned long                 n_broken_bonds) const;
-    void
+    /// summary.json with exit state "running" (rank 0), so that a killed
+    /// run is never taken for a finished one. Returns why it failed, or "".
+    std::string
+    write_running_marker() const;
+    /// summary.json (rank 0; written to a temporary file and renamed).
+    /// Collective. Returns why it failed, or "".
+    std::string
     write_summary() const;
+    void
+    write_summary(std::ostream                &out,
+                  const Coupling::ProblemSize &final_size,
+                  double                       peak_memory_mb) const;
     void
     print_end() const;
 

@@ -3,6 +3,7 @@
 // summary.json (the postprocessors add their own members).
 #include <pdfem/base/config.h>
 #include <pdfem/base/json_writer.h>
+#include <pdfem/io/atomic_file.h>
 #include <pdfem/simulator/summary.h>
 
 #include <deal.II/base/mpi.h>
@@ -101,15 +102,48 @@ namespace pdfem
   }
 
   template <int dim>
-  void
+  std::string
+  Simulator<dim>::Impl::write_running_marker() const
+  {
+    if (!root)
+      return "";
+    return IO::write_atomically(setup.out_dir + "/summary.json",
+                                [&](std::ostream &out) {
+                                  IO::JsonWriter json(out);
+                                  json.begin_object();
+                                  json.value("pdfem_version", PDFEM_VERSION);
+                                  json.value("scene", setup.name);
+                                  json.value("input_file", setup.file);
+                                  json.value("exit_state", "running");
+                                  json.value("message",
+                                             "the run has not ended: it is "
+                                             "running, or it was killed");
+                                  json.end_object();
+                                });
+  }
+
+  template <int dim>
+  std::string
   Simulator<dim>::Impl::write_summary() const
   {
     struct rusage usage;
     getrusage(RUSAGE_SELF, &usage);
     const Coupling::ProblemSize final_size = coupled->size(); // collective
     if (!root)
-      return;
-    std::ofstream  out(setup.out_dir + "/summary.json");
+      return "";
+    // ru_maxrss: kB on Linux
+    return IO::write_atomically(
+      setup.out_dir + "/summary.json", [&](std::ostream &out) {
+        write_summary(out, final_size, usage.ru_maxrss / 1024.);
+      });
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::Impl::write_summary(std::ostream                &out,
+                                      const Coupling::ProblemSize &final_size,
+                                      const double peak_memory_mb) const
+  {
     IO::JsonWriter json(out);
     json.begin_object();
     Summary::write_header(
@@ -143,7 +177,7 @@ namespace pdfem
     for (const auto &[phase, seconds] : setup.timings)
       json.value(phase, seconds);
     json.end_object();
-    json.value("peak_memory_mb_rank0", usage.ru_maxrss / 1024.); // Linux: kB
+    json.value("peak_memory_mb_rank0", peak_memory_mb);
     json.end_object();
   }
 
@@ -163,14 +197,15 @@ namespace pdfem
                   << seconds << " s" << std::defaultfloat << std::endl;
   }
 
-#define INSTANTIATE(dim)                                      \
-  template void Simulator<dim>::Impl::print_header() const;   \
-  template void Simulator<dim>::Impl::print_static_progress(  \
-    const Drivers::StepRecord &, unsigned long) const;        \
-  template void Simulator<dim>::Impl::print_dynamic_progress( \
-    const Drivers::DynamicRecord &, unsigned long) const;     \
-  template void Simulator<dim>::Impl::write_summary() const;  \
-  template void Simulator<dim>::Impl::print_end() const;
+#define INSTANTIATE(dim)                                                   \
+  template void Simulator<dim>::Impl::print_header() const;                \
+  template void Simulator<dim>::Impl::print_static_progress(               \
+    const Drivers::StepRecord &, unsigned long) const;                     \
+  template void Simulator<dim>::Impl::print_dynamic_progress(              \
+    const Drivers::DynamicRecord &, unsigned long) const;                  \
+  template std::string Simulator<dim>::Impl::write_summary() const;        \
+  template std::string Simulator<dim>::Impl::write_running_marker() const; \
+  template void        Simulator<dim>::Impl::print_end() const;
   PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
 } // namespace pdfem

@@ -23,8 +23,16 @@ namespace pdfem
               const std::vector<std::string> &columns,
               bool                            active);
 
-      /// One row, in the order of the columns.
-      void
+      /// The name of column @p c.
+      const std::string &
+      column(std::size_t c) const
+      {
+        return columns[c];
+      }
+
+      /// One row, in the order of the columns. Returns false if it could
+      /// not be written (disk full, folder gone).
+      bool
       add_row(const std::vector<double> &values);
 
       /// Turn a set name ("left", "(0, -0.5)") into a column-name part.
@@ -32,8 +40,9 @@ namespace pdfem
       column_name(const std::string &name);
 
     private:
-      std::ofstream out;
-      std::size_t   n_columns;
+      std::ofstream            out;
+      std::size_t              n_columns;
+      std::vector<std::string> columns;
     };
   } // namespace IO
 } // namespace pdfem

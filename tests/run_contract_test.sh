@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# The run contract of design.md that scene tests do not see:
+# - while a run is going, summary.json says 'running' (a killed run is never taken for a finished one);
+# - SIGTERM and SIGINT end a run after the current step with exit status 3, summary.json says
+#   'interrupted' and names the signal, and history.csv ends with the step the run stopped at;
+# - parameters.prm in the output folder (every --set applied) repeats the run: the same nodes.csv.
+# usage: run_contract_test.sh PDFEM CHECKER SCENES_DIR WORK
+set -u
+pdfem=$(readlink -f "$1") checker=$(readlink -f "$2") scenes=$(readlink -f "$3") work=$4
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+
+# name, signal, scene, overrides (long runs: stopped well before their end)
+run_case() {
+  local name=$1 sig=$2 scene=$3; shift 3
+  local out="$work/$name"
+  "$pdfem" "$scenes/$scene" --output "$out" --quiet "$@" > "$work/$name.log" 2>&1 &
+  local pid=$!
+  for _ in $(seq 1 1200); do
+    if [ -f "$out/history.csv" ] && [ "$(wc -l < "$out/history.csv")" -ge 3 ]; then break; fi
+    kill -0 $pid 2> /dev/null || break
+    sleep 0.1
+  done
+  "$checker" string "$out/summary.json" exit_state running || fail "$name: no 'running' summary.json"
+  kill "-$sig" $pid 2> /dev/null
+  wait $pid
+  local rc=$?
+  cat "$work/$name.log"
+  [ $rc -eq 3 ] || fail "$name: exit status $rc, expected 3"
+  "$checker" string "$out/summary.json" exit_state interrupted || fail "$name: exit state"
+  grep -q "SIG$sig received" "$out/summary.json" || fail "$name: the message does not name SIG$sig"
+  grep -q "SIG$sig received: stopped after step" "$work/$name.log" || fail "$name: no message on stderr"
+  # the last history row is the step the run stopped at
+  local last_step steps
+  last_step=$(tail -n 1 "$out/history.csv" | cut -d, -f1)
+  steps=$("$checker" get "$out/summary.json" steps)
+  [ "${last_step%.*}" = "$steps" ] || fail "$name: history ends at step $last_step, summary says $steps"
+  echo "$name: stopped by SIG$sig at step $steps"
+}
+
+# explicit dynamics, 100 times its usual end time
+run_case explicit TERM dynamics_wave_plate_plane_stress.prm --set "Driver/End time=2.2e-2"
+# Newton with stability checks, many load steps
+run_case newton INT rnp_cracked_plate_hard.prm --set "Driver/Load steps=2000"
+
+# parameters.prm repeats the run, from another folder
+"$pdfem" "$scenes/patch_2d_quad.prm" --output "$work/first" --quiet --set "Output/Write nodes csv=true" \
+  || fail "patch_2d_quad did not complete"
+grep -q "Write nodes csv = true" "$work/first/parameters.prm" || fail "parameters.prm lacks the --set value"
+(cd "$work" && "$pdfem" first/parameters.prm --output "$work/again" --quiet) || fail "parameters.prm did not run"
+cmp -s "$work/first/nodes.csv" "$work/again/nodes.csv" || fail "parameters.prm gave another nodes.csv"
+echo "run contract test passed"
