@@ -4,6 +4,7 @@
 
 #include <deal.II/base/function_parser.h>
 
+#include <iostream>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -40,6 +41,10 @@ namespace pdfem
                      const std::string &file,
                      const std::string &parameter)
     {
+      // deal.II prints muparser's five-line report to std::cerr before it
+      // throws: silenced here, the one-line message below says it.
+      std::ostringstream muparser_report;
+      std::streambuf    *cerr_buffer = std::cerr.rdbuf(muparser_report.rdbuf());
       try
         {
           dealii::FunctionParser<3> f(1);
@@ -48,9 +53,11 @@ namespace pdfem
                        std::map<std::string, double>(),
                        true);
           (void)f.value(dealii::Point<3>());
+          std::cerr.rdbuf(cerr_buffer);
         }
       catch (...)
         {
+          std::cerr.rdbuf(cerr_buffer);
           throw InputError(file,
                            parameter,
                            "cannot parse the expression '" + expression + "'",

@@ -116,24 +116,44 @@ namespace pdfem
       region.source_file          = settings.source_file;
       model->initialize(region);
 
-      // Bonds crossing a pre-existing crack are cut for good.
-      std::vector<std::size_t> cut_families;
-      if (!settings.cracks.empty())
-        for (std::size_t o = 0; o < families.owners.size(); ++o)
-          {
-            bool cut = false;
-            for (std::size_t b = families.offsets[o];
-                 b < families.offsets[o + 1];
-                 ++b)
-              if (Mesh::cut_by_any(settings.cracks,
-                                   x[families.owners[o]],
-                                   x[families.members[b]]))
+      // Bonds crossing a pre-existing crack are cut for good; a crack that
+      // cuts none lies outside every PD region and would not be there.
+      std::vector<std::size_t>   cut_families;
+      const auto                &cracks = settings.cracks;
+      std::vector<unsigned long> cut_by(cracks.size(), 0);
+      for (std::size_t o = 0; o < families.owners.size() && !cracks.empty();
+           ++o)
+        {
+          bool cut = false;
+          for (std::size_t b = families.offsets[o]; b < families.offsets[o + 1];
+               ++b)
+            for (std::size_t c = 0; c < cracks.size(); ++c)
+              if (cracks[c].cuts(x[families.owners[o]], x[families.members[b]]))
                 {
                   families.intact[b] = 0;
                   cut                = true;
+                  ++cut_by[c];
                 }
-            if (cut)
-              cut_families.push_back(o);
+          if (cut)
+            cut_families.push_back(o);
+        }
+      Utilities::MPI::sum(cut_by, comm, cut_by);
+      for (std::size_t c = 0; c < cracks.size(); ++c)
+        if (cut_by[c] == 0)
+          {
+            std::ostringstream crack;
+            for (unsigned int p = 0; p < dim; ++p)
+              for (unsigned int d = 0; d < dim; ++d)
+                crack << (d == 0 ? (p ? " -- (" : "(") : ", ")
+                      << cracks[c].points[p][d] << (d + 1 == dim ? ")" : "");
+            throw InputError(settings.source_file,
+                             "Peridynamics/Pre-existing cracks",
+                             "crack " + std::to_string(c + 1) + " " +
+                               crack.str() +
+                               " cuts no bond: it lies outside every PD "
+                               "region",
+                             "cracks through PD cells (Mesh/PD regions), or "
+                             "Fracture/Adaptive margin > 0");
           }
       model->bonds_changed(cut_families, settings.free_crack_faces);
       if (settings.free_crack_faces && !settings.cracks.empty())

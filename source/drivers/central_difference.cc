@@ -41,6 +41,19 @@ namespace pdfem
         throw RunFailure("time step too large",
                          "no stable time step: the largest eigenvalue of "
                          "M^-1 K is not positive (no free DoF?)");
+      // A given step above the critical one is refused before the first
+      // step, however few steps the run has (the estimate from below of
+      // omega_max makes dt_crit an upper bound: no stable step is refused).
+      if (settings.time_step > estimate.critical_time_step)
+        throw RunFailure(
+          "time step too large",
+          "Driver/Time step = " + number(settings.time_step) +
+            " s is above the critical step 2/omega_max = " +
+            number(estimate.critical_time_step) +
+            " s of this mesh: the central difference would blow up; use at "
+            "most " +
+            number(0.9 * estimate.critical_time_step) +
+            " s (or Time step = auto)");
       const unsigned int n_steps =
         static_cast<unsigned int>(std::ceil(settings.end_time / dt - 1e-9));
       const MPI_Comm comm = U.get_mpi_communicator();
@@ -96,7 +109,10 @@ namespace pdfem
       const auto loop_start = clock::now();
       for (unsigned int step = 1; step <= n_steps; ++step)
         {
-          const double t = step * dt;
+          // The last step ends at the end time exactly (it is shorter).
+          const bool   last = step == n_steps;
+          const double h = last ? settings.end_time - (n_steps - 1) * dt : dt;
+          const double t = last ? settings.end_time : step * dt;
           start          = clock::now();
           {
             double       *u = U.begin();
@@ -108,8 +124,8 @@ namespace pdfem
                 held_old.push_back(u[i]);
               else
                 {
-                  v[i] += 0.5 * dt * a[i];
-                  u[i] += dt * v[i];
+                  v[i] += 0.5 * h * a[i];
+                  u[i] += h * v[i];
                 }
             half.swap(half_old);
             std::copy(v, v + n, half.begin());
@@ -131,7 +147,7 @@ namespace pdfem
             const double *a = A.begin();
             for (std::size_t i = 0; i < n; ++i)
               if (!held[i])
-                v[i] += 0.5 * dt * a[i];
+                v[i] += 0.5 * h * a[i];
           }
           energy.step(U, F_int, F_ext, held, kinetic());
           time_spent.update += seconds_since(start);
@@ -139,7 +155,7 @@ namespace pdfem
           record           = DynamicRecord();
           record.step      = step;
           record.time      = t;
-          record.time_step = dt;
+          record.time_step = h;
           if (after_step)
             {
               start              = clock::now();
@@ -153,7 +169,7 @@ namespace pdfem
                   const double *a = A.begin();
                   for (std::size_t i = 0; i < n; ++i)
                     if (!held[i])
-                      v[i] -= 0.5 * dt * a[i];
+                      v[i] -= 0.5 * h * a[i];
                   held = held_flags(system, U);
                   system.internal_force(U, F_int);
                   energy.bonds_broke(U, F_int);
@@ -163,7 +179,7 @@ namespace pdfem
                     if (held[i])
                       v[i] = 0.;
                     else
-                      v[i] += 0.5 * dt * a[i];
+                      v[i] += 0.5 * h * a[i];
                 }
               time_spent.callback += seconds_since(start);
             }

@@ -519,16 +519,28 @@ namespace pdfem
           for (; depth > 0; --depth)
             prm.leave_subsection();
         }
-      dim = prm.get_integer("Dimension");
-      mesh.parse(prm, file);
-      material.parse(prm, file, dim);
-      peridynamics.parse(prm, file, dim);
-      rnp.parse(prm, file);
-      boundary_conditions.parse(prm, file, dim);
-      linear_solver.parse(prm, file);
-      driver.parse(prm, file, dim);
-      fracture.parse(prm, file);
-      output.parse(prm, file);
+      // A value that matches its pattern can still fail to convert (a
+      // subnormal number such as 1e-320 in a Double entry): one line too.
+      try
+        {
+          dim = prm.get_integer("Dimension");
+          mesh.parse(prm, file);
+          material.parse(prm, file, dim);
+          peridynamics.parse(prm, file, dim);
+          rnp.parse(prm, file);
+          boundary_conditions.parse(prm, file, dim);
+          linear_solver.parse(prm, file);
+          driver.parse(prm, file, dim);
+          fracture.parse(prm, file);
+          output.parse(prm, file);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          throw InputError(file,
+                           "",
+                           clean_dealii_message(e.what()),
+                           "see 'pdfem --print-parameters'");
+        }
       // Which driver and criterion fit the model is checked by the plugins
       // themselves (pdfem::check_plugins()).
     }
