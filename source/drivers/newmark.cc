@@ -256,6 +256,21 @@ namespace pdfem
                              "(Newmark is unconditionally stable: the step "
                              "is an accuracy choice)",
                              "dt > 0 [s]");
+          // The run ends at the end time exactly: a step that does not
+          // divide it is shortened to the next one that does (one
+          // factorisation for every step).
+          const double n_steps =
+            std::ceil(parameters.end_time / parameters.time_step - 1e-9);
+          if (std::abs(n_steps * parameters.time_step - parameters.end_time) >
+              1e-9 * parameters.end_time)
+            {
+              const double given   = parameters.time_step;
+              parameters.time_step = parameters.end_time / n_steps;
+              step_note = p + "Time step " + number(given) + " s does not " +
+                          "divide End time " + number(parameters.end_time) +
+                          " s: " + number(n_steps) + " steps of " +
+                          number(parameters.time_step) + " s";
+            }
           if (parameters.hht_alpha != 0.)
             return; // HHT sets beta and gamma
           if (!(gamma >= 0.5))
@@ -275,6 +290,14 @@ namespace pdfem
                                number(gamma),
                              number(beta_min) +
                                " = (2 gamma + 1)^2 / 16 <= beta <= 1");
+        }
+
+        std::vector<std::string>
+        notes() const override
+        {
+          if (step_note.empty())
+            return {};
+          return {step_note};
         }
 
         void
@@ -302,6 +325,10 @@ namespace pdfem
                      static_cast<unsigned long>(
                        integrator ? integrator->n_factorizations() : 0));
         }
+
+      private:
+        /// Why the time step was shortened (empty: it was not).
+        std::string step_note;
       };
     } // namespace
 
