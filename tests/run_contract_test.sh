@@ -3,7 +3,8 @@
 # - while a run is going, summary.json says 'running' (a killed run is never taken for a finished one);
 # - SIGTERM and SIGINT end a run after the current step with exit status 3, summary.json says
 #   'interrupted' and names the signal, and history.csv ends with the step the run stopped at;
-# - parameters.prm in the output folder (every --set applied) repeats the run: the same nodes.csv.
+# - parameters.prm in the output folder (every --set applied) repeats the run: the same nodes.csv;
+# - a run removes the outputs an earlier run left in its folder, and no other file.
 # usage: run_contract_test.sh PDFEM CHECKER SCENES_DIR WORK
 set -u
 pdfem=$(readlink -f "$1") checker=$(readlink -f "$2") scenes=$(readlink -f "$3") work=$4
@@ -47,6 +48,12 @@ run_case newton INT rnp_cracked_plate_hard.prm --set "Driver/Load steps=2000"
 "$pdfem" "$scenes/patch_2d_quad.prm" --output "$work/first" --quiet --set "Output/Write nodes csv=true" \
   || fail "patch_2d_quad did not complete"
 grep -q "Write nodes csv = true" "$work/first/parameters.prm" || fail "parameters.prm lacks the --set value"
+# ... into a folder with an earlier run's outputs: those go, other files stay
+mkdir -p "$work/again" && touch "$work/again/solution_00099.vtu" "$work/again/crack_paths.csv" \
+  "$work/again/notes.txt"
 (cd "$work" && "$pdfem" first/parameters.prm --output "$work/again" --quiet) || fail "parameters.prm did not run"
 cmp -s "$work/first/nodes.csv" "$work/again/nodes.csv" || fail "parameters.prm gave another nodes.csv"
+[ ! -e "$work/again/solution_00099.vtu" ] && [ ! -e "$work/again/crack_paths.csv" ] \
+  || fail "an earlier run's outputs stayed in the folder"
+[ -e "$work/again/notes.txt" ] || fail "a file pdfem does not write was removed"
 echo "run contract test passed"

@@ -140,6 +140,33 @@ namespace pdfem
     return plugins;
   }
 
+  namespace
+  {
+    /// Remove the files pdfem writes (and only those) from @p folder:
+    /// history.csv, summary.json, nodes.csv, crack_paths.*, solution.pvd
+    /// and solution_*.vtu/.pvtu. parameters.prm, written for this run
+    /// before, and every other file stay.
+    void
+    remove_earlier_outputs(const std::string &folder)
+    {
+      namespace fs = std::filesystem;
+      std::error_code ec;
+      for (const auto &entry : fs::directory_iterator(folder, ec))
+        {
+          const std::string name  = entry.path().filename().string();
+          const bool        field = name.rfind("solution_", 0) == 0 &&
+                             (entry.path().extension() == ".vtu" ||
+                              entry.path().extension() == ".pvtu");
+          if (entry.is_regular_file() &&
+              (field || name == "history.csv" || name == "summary.json" ||
+               name == "summary.json.tmp" || name == "nodes.csv" ||
+               name == "solution.pvd" || name == "crack_paths.vtk" ||
+               name == "crack_paths.csv"))
+            fs::remove(entry.path(), ec);
+        }
+    }
+  } // namespace
+
   template <int dim>
   void
   Simulator<dim>::Impl::set_up()
@@ -200,8 +227,11 @@ namespace pdfem
       for (const auto &c : p->history_columns())
         columns.push_back(c);
     columns.push_back("wall_seconds");
-    // From here on the run writes: a killed run leaves summary.json
-    // saying it did not end.
+    // From here on the run writes: the outputs an earlier run left in the
+    // folder go first (so that none is taken for this run's), and a killed
+    // run leaves summary.json saying it did not end.
+    if (root)
+      remove_earlier_outputs(setup.out_dir);
     const std::string marker_error =
       Utilities::MPI::broadcast(comm, write_running_marker(), 0);
     if (!marker_error.empty())
