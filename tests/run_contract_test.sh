@@ -4,7 +4,8 @@
 # - SIGTERM and SIGINT end a run after the current step with exit status 3, summary.json says
 #   'interrupted' and names the signal, and history.csv ends with the step the run stopped at;
 # - parameters.prm in the output folder (every --set applied) repeats the run: the same nodes.csv;
-# - a run removes the outputs an earlier run left in its folder, and no other file.
+# - a run removes the outputs an earlier run left in its folder, and no other file;
+# - an output that cannot be written (the folder removed mid-run) ends the run with 'io error'.
 # usage: run_contract_test.sh PDFEM CHECKER SCENES_DIR WORK
 set -u
 pdfem=$(readlink -f "$1") checker=$(readlink -f "$2") scenes=$(readlink -f "$3") work=$4
@@ -43,6 +44,26 @@ run_case() {
 run_case explicit TERM dynamics_wave_plate_plane_stress.prm --set "Driver/End time=2.2e-2"
 # Newton with stability checks, many load steps
 run_case newton INT rnp_cracked_plate_hard.prm --set "Driver/Load steps=2000"
+
+# the output folder removed during a run: the next field output fails, the run ends 'io error'
+# (exit status 3, one message naming the file), no crash
+out="$work/removed"
+"$pdfem" "$scenes/rnp_cracked_plate_hard.prm" --output "$out" --quiet --set "Driver/Load steps=2000" \
+  --set "Output/Write vtu=true" --set "Output/Write every=1" > "$work/removed.log" 2>&1 &
+pid=$!
+for _ in $(seq 1 1200); do
+  if [ -f "$out/history.csv" ] && [ "$(wc -l < "$out/history.csv")" -ge 3 ]; then break; fi
+  kill -0 $pid 2> /dev/null || break
+  sleep 0.1
+done
+rm -rf "$out"
+wait $pid
+rc=$?
+cat "$work/removed.log"
+[ $rc -eq 3 ] || fail "removed folder: exit status $rc, expected 3"
+grep -q "io error" "$work/removed.log" || fail "removed folder: no 'io error' message"
+! grep -qi "terminate\|Stacktrace\|Aborted" "$work/removed.log" || fail "removed folder: a crash"
+echo "removed folder: io error"
 
 # parameters.prm repeats the run, from another folder
 "$pdfem" "$scenes/patch_2d_quad.prm" --output "$work/first" --quiet --set "Output/Write nodes csv=true" \

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/config.h>
+#include <pdfem/base/exceptions.h>
+#include <pdfem/io/atomic_file.h>
 #include <pdfem/io/field_output.h>
 
 #include <deal.II/base/data_out_base.h>
@@ -39,13 +41,12 @@ namespace pdfem
     template <int dim>
     FieldOutput<dim>::~FieldOutput()
     {
-      try
+      // Not collective here: only wait for this rank's piece.
+      if (pending.valid())
         {
-          finish();
-        }
-      catch (const std::exception &e)
-        {
-          std::cerr << "pdfem: field output failed: " << e.what() << std::endl;
+          const std::string error = pending.get();
+          if (!error.empty())
+            std::cerr << "pdfem: field output failed: " << error << std::endl;
         }
     }
 
@@ -53,8 +54,12 @@ namespace pdfem
     void
     FieldOutput<dim>::finish()
     {
-      if (pending.valid())
-        pending.get();
+      const std::string error = pending.valid() ? pending.get() : "";
+      if (Utilities::MPI::max(error.empty() ? 0 : 1, comm) > 0)
+        throw RunFailure("io error",
+                         error.empty() ? "another rank could not write its "
+                                         "field file" :
+                                         error);
     }
 
     // Three bytes give four characters. deal.II's encoder goes through
@@ -141,9 +146,8 @@ namespace pdfem
       }
 
       void
-      write_piece(const std::string &file, const Piece &piece)
+      write_piece(std::ostream &out, const Piece &piece)
       {
-        std::ofstream out(file);
         out << "<?xml version=\"1.0\"?>\n"
                "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
                "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
@@ -165,17 +169,13 @@ namespace pdfem
         write_array(out, "UInt8", "types", 1, encode(piece.types));
         out << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
                "</VTKFile>\n";
-        out.close();
-        if (!out)
-          throw std::runtime_error("cannot write " + file);
       }
 
       void
-      write_record(const std::string              &file,
+      write_record(std::ostream                   &out,
                    const Piece                    &piece,
                    const std::vector<std::string> &sources)
       {
-        std::ofstream out(file);
         out << "<?xml version=\"1.0\"?>\n"
                "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" "
                "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
@@ -192,8 +192,6 @@ namespace pdfem
         for (const std::string &source : sources)
           out << "    <Piece Source=\"" << source << "\"/>\n";
         out << "  </PUnstructuredGrid>\n</VTKFile>\n";
-        if (!out)
-          throw std::runtime_error("cannot write " + file);
       }
 
       /// VTK's vertex order and cell type for a deal.II cell.
@@ -304,8 +302,10 @@ namespace pdfem
       for (Array *a : {&s1, &s_min, &von_mises, &damage, &kind})
         piece.point_data.push_back(std::move(*a));
 
-      // solution_NNNNN.R.vtu per rank R, solution_NNNNN.pvtu by rank 0.
-      const MPI_Comm     comm    = node_dofs.get_communicator();
+      // solution_NNNNN.R.vtu per rank R, solution_NNNNN.pvtu by rank 0,
+      // each written whole or not at all (a failure: RunFailure "io
+      // error" on every rank, at this write or at finish()).
+      comm                       = node_dofs.get_communicator();
       const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
       const std::string  base =
         "solution_" + Utilities::int_to_string(counter++, 5);
@@ -314,23 +314,36 @@ namespace pdfem
         sources.push_back(base + "." + Utilities::int_to_string(r) + ".vtu");
       const std::string pvtu = base + ".pvtu";
       finish();
-      if (my_rank == 0)
-        write_record(directory + "/" + pvtu, piece, sources);
-      pending = std::async(std::launch::async,
-                           [piece = std::move(piece),
-                            file  = directory + "/" + sources[my_rank]]() {
-                             write_piece(file, piece);
-                           });
       records.emplace_back(time, pvtu);
+      std::string error;
       if (my_rank == 0)
         {
-          std::ofstream pvd(directory + "/solution.pvd");
-          DataOutBase::write_pvd_record(pvd, records);
+          error =
+            write_atomically(directory + "/" + pvtu, [&](std::ostream &out) {
+              write_record(out, piece, sources);
+            });
+          if (error.empty())
+            error =
+              write_atomically(directory + "/solution.pvd",
+                               [&](std::ostream &out) {
+                                 DataOutBase::write_pvd_record(out, records);
+                               });
         }
+      error = Utilities::MPI::broadcast(comm, error, 0);
+      if (!error.empty())
+        throw RunFailure("io error", error);
+      pending =
+        std::async(std::launch::async,
+                   [piece = std::move(piece),
+                    file  = directory + "/" + sources[my_rank]]() {
+                     return write_atomically(file, [&](std::ostream &out) {
+                       write_piece(out, piece);
+                     });
+                   });
     }
 
     template <int dim>
-    void
+    std::string
     FieldOutput<dim>::write_nodes_csv(const std::string                 &file,
                                       const Coupling::NodalResults<dim> &r)
     {
@@ -344,27 +357,28 @@ namespace pdfem
                       return r.position[a][d] < r.position[b][d];
                   return a < b;
                 });
-      std::ofstream out(file);
-      const char   *axis = "xyz";
-      for (unsigned int d = 0; d < dim; ++d)
-        out << (d ? "," : "") << axis[d];
-      for (unsigned int d = 0; d < dim; ++d)
-        out << ",u" << axis[d];
-      const auto stress_names = Coupling::stress_component_names<dim>();
-      for (const auto &n : stress_names)
-        out << ",s" << n;
-      out << ",damage,kind\n";
-      out << std::setprecision(std::numeric_limits<double>::max_digits10);
-      for (const unsigned int k : order)
-        {
-          for (unsigned int d = 0; d < dim; ++d)
-            out << (d ? "," : "") << r.position[k][d];
-          for (unsigned int d = 0; d < dim; ++d)
-            out << "," << r.displacement[k][d];
-          for (unsigned int c = 0; c < stress_names.size(); ++c)
-            out << "," << stress_component(r.stress[k], c);
-          out << "," << r.damage[k] << "," << int(r.kind[k]) << "\n";
-        }
+      return write_atomically(file, [&](std::ostream &out) {
+        const char *axis = "xyz";
+        for (unsigned int d = 0; d < dim; ++d)
+          out << (d ? "," : "") << axis[d];
+        for (unsigned int d = 0; d < dim; ++d)
+          out << ",u" << axis[d];
+        const auto stress_names = Coupling::stress_component_names<dim>();
+        for (const auto &n : stress_names)
+          out << ",s" << n;
+        out << ",damage,kind\n";
+        out << std::setprecision(std::numeric_limits<double>::max_digits10);
+        for (const unsigned int k : order)
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              out << (d ? "," : "") << r.position[k][d];
+            for (unsigned int d = 0; d < dim; ++d)
+              out << "," << r.displacement[k][d];
+            for (unsigned int c = 0; c < stress_names.size(); ++c)
+              out << "," << stress_component(r.stress[k], c);
+            out << "," << r.damage[k] << "," << int(r.kind[k]) << "\n";
+          }
+      });
     }
 
 #define INSTANTIATE(dim) template class FieldOutput<dim>;

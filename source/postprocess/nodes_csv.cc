@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The `nodes csv` postprocessor.
+#include <pdfem/base/exceptions.h>
 #include <pdfem/io/field_output.h>
 #include <pdfem/simulator/postprocess.h>
+
+#include <deal.II/base/mpi.h>
 
 namespace pdfem
 {
@@ -27,10 +30,19 @@ namespace pdfem
         void
         finish() override
         {
+          // Written whole or not at all; a failure ends the run with
+          // "io error" on every rank.
+          std::string error;
           if (this->is_root())
-            IO::FieldOutput<dim>::write_nodes_csv(this->get_output_directory() +
-                                                    "/nodes.csv",
-                                                  this->get_nodal_results());
+            error = IO::FieldOutput<dim>::write_nodes_csv(
+              this->get_output_directory() + "/nodes.csv",
+              this->get_nodal_results());
+          error =
+            dealii::Utilities::MPI::broadcast(this->get_mpi_communicator(),
+                                              error,
+                                              0);
+          if (!error.empty())
+            throw RunFailure("io error", error);
         }
       };
     } // namespace

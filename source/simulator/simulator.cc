@@ -561,10 +561,25 @@ namespace pdfem
         s.coupled->residual(s.u, s.time_step_record.time, r, false);
       }
     s.update_results(s.u);
-    s.write_fields(s.driver->dynamic() ? s.time_step_record.time :
-                                         double(s.n_steps));
-    for (const auto &p : s.postprocessors)
-      p->finish();
+    try
+      {
+        s.write_fields(s.driver->dynamic() ? s.time_step_record.time :
+                                             double(s.n_steps));
+        for (const auto &p : s.postprocessors)
+          p->finish();
+      }
+    catch (const RunFailure &e)
+      {
+        // An output that could not be written: the run's own end state
+        // stays if it had already stopped for another reason.
+        if (s.exit_state == "completed" || s.exit_state == "separated")
+          {
+            s.exit_state = e.exit_state;
+            s.message    = e.what();
+          }
+        if (s.root)
+          std::cerr << "pdfem: " << e.what() << std::endl;
+      }
     s.output_time += seconds_since(start);
     s.setup.timings["output"]       = s.output_time;
     s.setup.timings["total"]        = seconds_since(s.setup.total_start);

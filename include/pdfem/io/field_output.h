@@ -41,7 +41,8 @@ namespace pdfem
     {
     public:
       FieldOutput(const std::string &directory, bool plane_strain, double nu);
-      /// Waits for the last piece (an error there is printed, not thrown).
+      /// Waits for the last piece (an error there is printed, not thrown;
+      /// call finish() to learn it).
       ~FieldOutput();
 
       void
@@ -49,12 +50,15 @@ namespace pdfem
             const Coupling::NodalResults<dim>  &results,
             double                              time);
 
-      /// nodes.csv: every node (sorted by coordinates) with displacement
-      /// and stress; written by rank 0, independent of the number of ranks.
-      /// Wait until every piece is on disk; rethrows a writing error.
+      /// Wait until every rank's piece is on disk. Collective: a piece that
+      /// could not be written on any rank throws RunFailure "io error".
       void
       finish();
-      static void
+
+      /// nodes.csv: every node (sorted by coordinates) with displacement
+      /// and stress, independent of the number of ranks. Written whole or
+      /// not at all (write_atomically()); returns why it failed, or "".
+      static std::string
       write_nodes_csv(const std::string                 &file,
                       const Coupling::NodalResults<dim> &results);
 
@@ -64,8 +68,10 @@ namespace pdfem
       double                                      nu;
       unsigned int                                counter = 0;
       std::vector<std::pair<double, std::string>> records;
-      /// The piece being written in the background.
-      std::future<void> pending;
+      /// The piece being written in the background (its error, or "").
+      std::future<std::string> pending;
+      /// The communicator of the last write() (finish() agrees over it).
+      MPI_Comm comm = MPI_COMM_SELF;
     };
   } // namespace IO
 } // namespace pdfem
