@@ -150,10 +150,10 @@ namespace pdfem
     }
 
     template <int dim>
-    unsigned int
-    CoupledSystem<dim>::count_pieces(const unsigned int min_nodes) const
+    std::vector<unsigned int>
+    CoupledSystem<dim>::Impl::piece_labels() const
     {
-      const Impl &s = *impl;
+      const Impl &s = *this;
       // Union-find over the local edges, then the smallest node index of
       // each component, agreed on by all ranks (MPI min) until nothing
       // changes: every rank ends with the same labels.
@@ -194,7 +194,16 @@ namespace pdfem
           previous = label;
         }
 
-      std::vector<unsigned int> size(s.n_nodes, 0);
+      return label;
+    }
+
+    template <int dim>
+    unsigned int
+    CoupledSystem<dim>::count_pieces(const unsigned int min_nodes) const
+    {
+      const Impl                     &s     = *impl;
+      const std::vector<unsigned int> label = s.piece_labels();
+      std::vector<unsigned int>       size(s.n_nodes, 0);
       for (unsigned int k = 0; k < s.n_nodes; ++k)
         ++size[label[k]];
       unsigned int pieces = 0;
@@ -222,6 +231,8 @@ namespace pdfem
   template const PDModels::Interface<dim> &CoupledSystem<dim>::pd_model()        \
     const;                                                                       \
   template unsigned int CoupledSystem<dim>::count_pieces(unsigned int) const;    \
+  template std::vector<unsigned int> CoupledSystem<dim>::Impl::piece_labels()    \
+    const;                                                                       \
   template const TrilinosWrappers::SparseMatrix &                                \
   CoupledSystem<dim>::preconditioner_matrix();
     PDFEM_INSTANTIATE(INSTANTIATE)

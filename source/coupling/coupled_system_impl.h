@@ -200,6 +200,11 @@ namespace pdfem
       void
       add_crack_face_area(const std::vector<Mesh::Crack<dim>> &cracks);
 
+      /// Per node the smallest node index of its piece (nodes joined by FE
+      /// cells or intact bonds); the same on every rank. Collective.
+      std::vector<unsigned int>
+      piece_labels() const;
+
       /// Owners without any intact bond and without FE cells: nothing ties
       /// them to the body any more, so they are held where they are.
       void

@@ -191,6 +191,24 @@ namespace pdfem
                                                              setup.cell_is_pd,
                                                              setup.settings);
     initial_size = coupled->size();
+    // A static solve needs every piece of the body held against rigid
+    // motion (a dynamic one does not: the mass holds it).
+    if (!driver->dynamic())
+      {
+        const auto unheld = coupled->unheld_rigid_motions();
+        if (!unheld.empty())
+          throw InputError(
+            setup.file,
+            "Boundary conditions/Dirichlet",
+            unheld[0] +
+              (unheld.size() > 1 ?
+                 " (and " + std::to_string(unheld.size() - 1) + " more)" :
+                 ""),
+            "prescribed displacements that hold every piece against each "
+            "rigid motion (" +
+              std::to_string(dim * (dim + 1) / 2) +
+              ": translations and rotations)");
+      }
     setup.timings["setup"] = seconds_since(setup.setup_start);
     print_header();
 

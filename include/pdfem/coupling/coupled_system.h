@@ -405,6 +405,19 @@ namespace pdfem
       unsigned int
       count_pieces(unsigned int min_nodes) const;
 
+      /**
+       * The rigid motions the prescribed displacements leave free, one
+       * line per piece of the body (nodes joined by FE cells or intact
+       * bonds, at least two) that they do not hold: its size, where it is
+       * and which motions are free ("translation y", "rotation about z",
+       * or a combined rotation). A static solve of such a piece is
+       * singular (a floating body). The rigid motions m_i hold when the
+       * Gram matrix sum over the prescribed DoFs of m_i m_j is regular.
+       * Empty: every piece is held. Collective.
+       */
+      std::vector<std::string>
+      unheld_rigid_motions() const;
+
       /// Names of the Dirichlet sets (boundaries or points), in input order.
       std::vector<std::string>
       reaction_names() const;
