@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 
 #include "coupled_system_impl.h"
 
@@ -274,51 +273,32 @@ namespace pdfem
       const std::vector<Point<dim>> &points,
       const double                   layer) const
     {
-      std::vector<Point<dim>> centres = points;
-      for (const unsigned int k : nodes)
-        centres.push_back(x[k]);
-      if (layer > 0. && !centres.empty())
+      if (layer > 0.)
         {
-          // Bucket the centres in cells of size `layer`: each PD node looks
-          // at the 3^dim cells around its own.
-          Point<dim> lo = centres[0];
-          for (const auto &p : centres)
-            for (unsigned int d = 0; d < dim; ++d)
-              lo[d] = std::min(lo[d], p[d]);
-          const auto cell_of = [&](const Point<dim> &p) {
-            std::array<long, dim> c;
-            for (unsigned int d = 0; d < dim; ++d)
-              c[d] = static_cast<long>(std::floor((p[d] - lo[d]) / layer));
-            return c;
-          };
-          std::map<std::array<long, dim>, std::vector<unsigned int>> buckets;
-          for (unsigned int i = 0; i < centres.size(); ++i)
-            buckets[cell_of(centres[i])].push_back(i);
-          const double r2 = layer * layer * (1. + 1e-10);
-          for (unsigned int k = 0; k < n_nodes; ++k)
-            {
-              if (!is_pd[k])
-                continue;
-              const auto home  = cell_of(x[k]);
-              bool       found = false;
-              for (unsigned int n = 0; n < std::pow(3, dim) && !found; ++n)
-                {
-                  auto         c    = home;
-                  unsigned int code = n;
-                  for (unsigned int d = 0; d < dim; ++d, code /= 3)
-                    c[d] += long(code % 3) - 1;
-                  const auto it = buckets.find(c);
-                  if (it != buckets.end())
-                    for (const unsigned int i : it->second)
-                      if (x[k].distance_square(centres[i]) <= r2)
-                        {
-                          found = true;
-                          break;
-                        }
-                }
-              if (found)
+          // The PD nodes within `layer` of the centres (the nodes, and the
+          // points appended to the positions) are the members of their
+          // families with that horizon: the families' cell-list search.
+          std::vector<Point<dim>> position = x;
+          position.insert(position.end(), points.begin(), points.end());
+          std::vector<std::uint8_t> member(position.size(), 0);
+          std::copy(is_pd.begin(), is_pd.end(), member.begin());
+          std::vector<unsigned int> centres = nodes;
+          for (unsigned int p = 0; p < points.size(); ++p)
+            centres.push_back(n_nodes + p);
+          const PD::Families within =
+            PD::find_families(position,
+                              std::vector<double>(position.size(), layer),
+                              centres,
+                              member);
+          nodes.insert(nodes.end(),
+                       within.members.begin(),
+                       within.members.end());
+          // A family leaves out its owner's own position: a PD node on a
+          // point is in the layer too.
+          for (const auto &p : points)
+            for (unsigned int k = 0; k < n_nodes; ++k)
+              if (is_pd[k] && x[k].distance_square(p) == 0.)
                 nodes.push_back(k);
-            }
         }
       std::sort(nodes.begin(), nodes.end());
       nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());

@@ -68,9 +68,9 @@ namespace pdfem
       auto w_ghosted = std::make_shared<Vector>(s.owned, s.relevant, s.comm);
       s.import_ghosts(*w, *w_ghosted);
       const bool hard = w_max > 0.;
-      return [this, q, w, u_ghosted, w_ghosted, hard](const Vector &u,
-                                                      double,
-                                                      Vector &out) {
+      return [this, q, u_ghosted, w_ghosted, hard](const Vector &u,
+                                                   double,
+                                                   Vector &out) {
         Impl &s = *impl;
         out.reinit(s.owned, s.comm);
         if (hard)

@@ -387,7 +387,7 @@ namespace pdfem
         coupled->break_bonds(grown);
         cracks->attach(*coupled);
       }
-    stop_if_interrupted();
+    stop_if_interrupted(StopOnSignals::stop_requested(comm));
     return check;
   }
 
@@ -395,11 +395,9 @@ namespace pdfem
   void
   Simulator<dim>::Impl::stop_if_interrupted(const int received) const
   {
-    const int s =
-      received >= 0 ? received : StopOnSignals::stop_requested(comm);
-    if (s != 0)
+    if (received != 0)
       throw RunFailure("interrupted",
-                       std::string(StopOnSignals::name(s)) +
+                       std::string(StopOnSignals::name(received)) +
                          " received: stopped after step " +
                          std::to_string(n_steps) + " (load factor " +
                          number(load_factor) + "), the state the outputs hold");

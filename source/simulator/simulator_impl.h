@@ -113,9 +113,9 @@ namespace pdfem
     void
     add_history_row(const std::vector<double> &base);
     /// Throw RunFailure "interrupted" if a stop signal was @p received (a
-    /// signal number, 0: none; -1: ask every rank now). Collective.
+    /// signal number from StopOnSignals::stop_requested(), 0: none).
     void
-    stop_if_interrupted(int received = -1) const;
+    stop_if_interrupted(int received) const;
     /// Nodal results of the current solution.
     void
     update_results(const Drivers::SystemInterface::Vector &u_now);

@@ -41,9 +41,9 @@ namespace
 
   TEST(AtomicFile, ReportsAFolderItCannotWriteTo)
   {
-    const std::string error = pdfem::IO::write_atomically(
-      "/nonexistent-pdfem-folder/summary.json",
-      [](std::ostream &out) { out << "x"; });
+    const std::string error =
+      pdfem::IO::write_atomically("/nonexistent-pdfem-folder/summary.json",
+                                  [](std::ostream &out) { out << "x"; });
     EXPECT_NE(error.find("cannot create"), std::string::npos) << error;
   }
 
@@ -53,7 +53,7 @@ namespace
   {
     if (!fs::exists("/dev/full"))
       GTEST_SKIP() << "no /dev/full";
-    pdfem::IO::History history("/dev/full", {"step", "time"}, true);
+    pdfem::IO::History  history("/dev/full", {"step", "time"}, true);
     std::vector<double> row(2, 1.);
     bool                written = true;
     // The stream buffers; within a few rows its flush fails.
