@@ -309,6 +309,30 @@ namespace pdfem
         nodal_field(model->linear() ? u_ghosted : u_tangent);
       std::vector<global_dof_index> rows(dim);
       std::vector<double>           K;
+      if (layout.family_elements)
+        {
+          // Each family's blocks on all its nodes, like a cell's.
+          const auto add_family = [&](const std::vector<unsigned int> &nodes,
+                                      const auto                      &blocks) {
+            const std::size_t n = nodes.size(), n_cols = dim * n;
+            cols.resize(n_cols);
+            for (std::size_t a = 0; a < n; ++a)
+              for (unsigned int c = 0; c < dim; ++c)
+                cols[dim * a + c] = node_dof[nodes[a]][c];
+            K.resize(n_cols * n_cols);
+            for (std::size_t a = 0; a < n; ++a)
+              for (std::size_t b = 0; b < n; ++b)
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int j = 0; j < dim; ++j)
+                    K[(dim * a + i) * n_cols + dim * b + j] =
+                      blocks[a * n + b][i][j];
+            add_to_matrix(matrix, cols, cols, K);
+          };
+          for_each_family_tangent(field, add_family);
+          add_held_diagonal(matrix);
+          matrix.compress(VectorOperation::add);
+          return;
+        }
       for_each_tangent_row(field, [&](const std::size_t o, const auto &blocks) {
         const unsigned int k      = families.owners[o];
         const std::size_t  n_cols = dim * blocks.size();

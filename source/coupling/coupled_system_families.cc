@@ -155,9 +155,11 @@ namespace pdfem
                              "cracks through PD cells (Mesh/PD regions), or "
                              "Fracture/Adaptive margin > 0");
           }
-      model->bonds_changed(cut_families, settings.free_crack_faces);
+      // The crack faces' area first: a model may read s_k when its bonds
+      // change (pdlsm energy's integration constraint).
       if (settings.free_crack_faces && !settings.cracks.empty())
         add_crack_face_area(settings.cracks);
+      model->bonds_changed(cut_families, settings.free_crack_faces);
       update_decoupled();
 
       // Ghosts: every DoF of a family member or of a vertex of an owned

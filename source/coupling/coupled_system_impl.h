@@ -107,6 +107,25 @@ namespace pdfem
       void
       import_ghosts(const dealii::TrilinosWrappers::MPI::Vector &v,
                     dealii::TrilinosWrappers::MPI::Vector       &ghosted) const;
+      /// The kept import from @p owned_vector's map to @p ghosted_vector's.
+      const Epetra_Import &
+      ghost_import(
+        const dealii::TrilinosWrappers::MPI::Vector &owned_vector,
+        const dealii::TrilinosWrappers::MPI::Vector &ghosted_vector) const;
+      /// y (owned) += the sum over ranks of @p contributions (a vector in
+      /// the ghosted layout whose ghost entries are this rank's
+      /// contributions to other ranks' DoFs): the reverse of the import.
+      void
+      scatter_add(const dealii::TrilinosWrappers::MPI::Vector &contributions,
+                  dealii::TrilinosWrappers::MPI::Vector       &y) const;
+      /// Family o's nodes as a family-element model sees them: the owner,
+      /// then its intact members in family order.
+      std::vector<unsigned int>
+      family_nodes(std::size_t o) const;
+      /// Family-element models: column j (vector j) of every owned node's
+      /// diagonal tangent block, summed over the families it is in.
+      std::vector<dealii::TrilinosWrappers::MPI::Vector>
+      family_diagonal_blocks(const PDModels::NodalField<dim> &field) const;
       /// Split the owners into pd_chunks and size pd_force, once the
       /// families are made.
       void
@@ -166,6 +185,27 @@ namespace pdfem
             {
               model->tangent_row(o, field, blocks);
               use(o, blocks);
+            }
+      }
+      /// use(nodes, blocks) with family o's nodes (family_nodes()) and
+      /// its tangent blocks (family_tangent()) for every owner o that is
+      /// not decoupled, at @p field (family-element models).
+      template <typename Use>
+      void
+      for_each_family_tangent(const PDModels::NodalField<dim> &field,
+                              const Use                       &use) const
+      {
+        std::vector<dealii::Tensor<2, dim>> blocks;
+        for (std::size_t o = 0; o < families.owners.size(); ++o)
+          if (!decoupled[o])
+            {
+              model->family_tangent(o, field, blocks);
+              const std::vector<unsigned int> nodes = family_nodes(o);
+              AssertThrow(blocks.size() == nodes.size() * nodes.size(),
+                          dealii::ExcMessage(
+                            "a family-element PD model's tangent must have "
+                            "(1 + intact bonds)^2 blocks"));
+              use(nodes, blocks);
             }
       }
       /// @p out = K(@p u) @p w on every DoF, unconstrained (FE cells and
@@ -308,10 +348,15 @@ namespace pdfem
       /// The factor of a cut cell's stiffness in the auxiliary matrix.
       double                                        cut_cell_stiffness = 1e-3;
       mutable dealii::TrilinosWrappers::MPI::Vector x_ghosted, x_masked;
+      /// Family-element models: contributions in the ghosted layout, and
+      /// their sums at the owners (scatter_add()).
+      mutable dealii::TrilinosWrappers::MPI::Vector scatter_ghosted,
+        scatter_owned;
       /// Owner ranges [pd_chunks[i], pd_chunks[i + 1]) with about equal
       /// numbers of bonds, for the threads of compute_pd_forces().
       std::vector<std::size_t> pd_chunks;
-      /// PD forces per owner (dim entries each), see compute_pd_forces().
+      /// PD forces per owner (dim entries each), see compute_pd_forces();
+      /// family-element models: per owner and per bond.
       mutable std::vector<double> pd_force;
       /// Owned -> ghosted imports by the identity of their maps' data
       /// (import_ghosts()): the maps of a vector stay while it lives.

@@ -18,20 +18,20 @@ namespace pdfem
     using namespace dealii;
 
     template <int dim>
-    void
-    CoupledSystem<dim>::Impl::import_ghosts(
-      const TrilinosWrappers::MPI::Vector &v,
-      TrilinosWrappers::MPI::Vector       &ghosted) const
+    const Epetra_Import &
+    CoupledSystem<dim>::Impl::ghost_import(
+      const TrilinosWrappers::MPI::Vector &owned_vector,
+      const TrilinosWrappers::MPI::Vector &ghosted_vector) const
     {
       // deal.II's assignment builds a new Epetra_Import at every call (on
       // plateCrack FC1, 7 % of the run); the imports are kept instead, one
       // per pair of maps (compared by identity: Epetra's SameAs compares
       // every index).
-      const Epetra_MultiVector &source = v.trilinos_vector();
-      Epetra_FEVector          &target = ghosted.trilinos_vector();
-      const auto               *from   = source.Map().DataPtr();
-      const auto               *to     = target.Map().DataPtr();
-      auto                      kept   = std::find_if(ghost_imports.begin(),
+      const Epetra_BlockMap &source = owned_vector.trilinos_vector().Map();
+      const Epetra_BlockMap &target = ghosted_vector.trilinos_vector().Map();
+      const auto            *from   = source.DataPtr();
+      const auto            *to     = target.DataPtr();
+      auto                   kept   = std::find_if(ghost_imports.begin(),
                                ghost_imports.end(),
                                [&](const auto &g) {
                                  return g.source == from && g.target == to;
@@ -41,14 +41,41 @@ namespace pdfem
           if (ghost_imports.size() == 4)
             ghost_imports.erase(ghost_imports.begin());
           ghost_imports.push_back(
-            {from,
-             to,
-             std::make_shared<Epetra_Import>(target.Map(), source.Map())});
+            {from, to, std::make_shared<Epetra_Import>(target, source)});
           kept = ghost_imports.end() - 1;
         }
-      const Epetra_Import &ghost_import = *kept->import;
-      AssertThrow(target.Import(source, ghost_import, Insert) == 0,
+      return *kept->import;
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::import_ghosts(
+      const TrilinosWrappers::MPI::Vector &v,
+      TrilinosWrappers::MPI::Vector       &ghosted) const
+    {
+      AssertThrow(ghosted.trilinos_vector().Import(v.trilinos_vector(),
+                                                   ghost_import(v, ghosted),
+                                                   Insert) == 0,
                   ExcMessage("ghost import failed"));
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::scatter_add(
+      const TrilinosWrappers::MPI::Vector &contributions,
+      TrilinosWrappers::MPI::Vector       &y) const
+    {
+      // The reverse of the ghost import, summing: every rank's
+      // contributions to a DoF (owned or ghost there) reach its owner.
+      if (scatter_owned.size() != y.size())
+        scatter_owned.reinit(owned, comm);
+      Epetra_FEVector &sum = scatter_owned.trilinos_vector();
+      sum.PutScalar(0.);
+      AssertThrow(sum.Export(contributions.trilinos_vector(),
+                             ghost_import(scatter_owned, contributions),
+                             Add) == 0,
+                  ExcMessage("scatter of PD contributions failed"));
+      y += scatter_owned;
     }
 
     template <int dim>
@@ -69,7 +96,9 @@ namespace pdfem
           pd_chunks.push_back(o + 1);
       if (pd_chunks.back() != n_owners)
         pd_chunks.push_back(n_owners);
-      pd_force.assign(dim * n_owners, 0.);
+      pd_force.assign(dim * (n_owners +
+                             (layout.family_elements ? families.n_bonds() : 0)),
+                      0.);
     }
 
     template <int dim>
@@ -81,6 +110,44 @@ namespace pdfem
       // The model's rows, chunk by chunk on the threads; decoupled owners
       // (held) get none.
       const PDModels::NodalField<dim> field = nodal_field(x);
+      if (layout.family_elements)
+        {
+          // Family o's forces at pd_force[dim (o + offsets[o]) ..]: its
+          // owner, then one slot per bond (0 for broken ones).
+          const auto owners = [&](const std::size_t begin,
+                                  const std::size_t end) {
+            std::vector<Tensor<1, dim>> f;
+            for (std::size_t o = begin; o < end; ++o)
+              {
+                double *slot = &pd_force[dim * (o + families.offsets[o])];
+                std::fill(slot,
+                          slot + dim * (1 + families.offsets[o + 1] -
+                                        families.offsets[o]),
+                          0.);
+                if (decoupled[o])
+                  continue;
+                model->family_forces(o, field, f);
+                std::size_t n = 0;
+                for (unsigned int c = 0; c < dim; ++c)
+                  slot[c] = f[0][c];
+                for (std::size_t j = families.offsets[o];
+                     j < families.offsets[o + 1];
+                     ++j)
+                  if (families.intact[j])
+                    {
+                      ++n;
+                      for (unsigned int c = 0; c < dim; ++c)
+                        slot[dim * (1 + j - families.offsets[o]) + c] = f[n][c];
+                    }
+                AssertThrow(n + 1 == f.size(),
+                            ExcMessage("a family-element PD model must give "
+                                       "one force per intact bond and one "
+                                       "on the owner"));
+              }
+          };
+          for_each_pd_chunk(fe_product, owners);
+          return;
+        }
       const auto owners = [&](const std::size_t begin, const std::size_t end) {
         model->forces(begin, end, field, pd_force.data());
         for (std::size_t o = begin; o < end; ++o)
@@ -112,6 +179,25 @@ namespace pdfem
     CoupledSystem<dim>::Impl::add_pd_forces(
       TrilinosWrappers::MPI::Vector &y) const
     {
+      if (layout.family_elements)
+        {
+          scatter_ghosted.trilinos_vector().PutScalar(0.);
+          double *g = scatter_ghosted.trilinos_vector()[0];
+          for (std::size_t o = 0; o < families.owners.size(); ++o)
+            {
+              const double *slot = &pd_force[dim * (o + families.offsets[o])];
+              for (unsigned int c = 0; c < dim; ++c)
+                g[relevant_lid[families.owners[o]][c]] += slot[c];
+              for (std::size_t j = families.offsets[o];
+                   j < families.offsets[o + 1];
+                   ++j)
+                for (unsigned int c = 0; c < dim; ++c)
+                  g[relevant_lid[families.members[j]][c]] +=
+                    slot[dim * (1 + j - families.offsets[o]) + c];
+            }
+          scatter_add(scatter_ghosted, y);
+          return;
+        }
       double *yv = y.trilinos_vector()[0];
       for (std::size_t o = 0; o < families.owners.size(); ++o)
         for (unsigned int c = 0; c < dim; ++c)
@@ -163,6 +249,11 @@ namespace pdfem
       block_inverse.assign(owned_nodes.size(), Tensor<2, dim>());
       const PDModels::NodalField<dim> field = nodal_field(u_ghosted);
       std::vector<Tensor<2, dim>>     row;
+      // Family-element models: the diagonal blocks of every family a node
+      // belongs to, gathered at its owner column by column.
+      std::vector<TrilinosWrappers::MPI::Vector> element_diagonal;
+      if (layout.family_elements)
+        element_diagonal = family_diagonal_blocks(field);
       for (std::size_t n = 0; n < owned_nodes.size(); ++n)
         {
           const unsigned int k = owned_nodes[n];
@@ -171,7 +262,11 @@ namespace pdfem
             for (unsigned int j = 0; j < dim; ++j)
               D[i][j] = fe_matrix.el(node_dof[k][i], node_dof[k][j]);
           const std::size_t o = family_of[k];
-          if (o < families.owners.size() && !decoupled[o])
+          if (layout.family_elements)
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                D[i][j] += element_diagonal[j][node_dof[k][i]];
+          else if (o < families.owners.size() && !decoupled[o])
             {
               model->tangent_row(o, field, row);
               D += row[0];
@@ -186,6 +281,49 @@ namespace pdfem
               }
           block_inverse[n] = invert(D);
         }
+    }
+
+    template <int dim>
+    std::vector<TrilinosWrappers::MPI::Vector>
+    CoupledSystem<dim>::Impl::family_diagonal_blocks(
+      const PDModels::NodalField<dim> &field) const
+    {
+      // Column j of every node's diagonal block, summed over the families
+      // it belongs to, one ghosted vector per column.
+      std::vector<TrilinosWrappers::MPI::Vector> ghosted(dim), columns(dim);
+      std::vector<double *>                      g(dim);
+      for (unsigned int j = 0; j < dim; ++j)
+        {
+          ghosted[j].reinit(owned, relevant, comm);
+          g[j] = ghosted[j].trilinos_vector()[0];
+        }
+      for_each_family_tangent(field,
+                              [&](const auto &nodes, const auto &blocks) {
+                                const std::size_t n = nodes.size();
+                                for (std::size_t a = 0; a < n; ++a)
+                                  for (unsigned int i = 0; i < dim; ++i)
+                                    for (unsigned int j = 0; j < dim; ++j)
+                                      g[j][relevant_lid[nodes[a]][i]] +=
+                                        blocks[a * n + a][i][j];
+                              });
+      for (unsigned int j = 0; j < dim; ++j)
+        {
+          columns[j].reinit(owned, comm);
+          scatter_add(ghosted[j], columns[j]);
+        }
+      return columns;
+    }
+
+    template <int dim>
+    std::vector<unsigned int>
+    CoupledSystem<dim>::Impl::family_nodes(const std::size_t o) const
+    {
+      std::vector<unsigned int> nodes{families.owners[o]};
+      for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
+           ++j)
+        if (families.intact[j])
+          nodes.push_back(families.members[j]);
+      return nodes;
     }
 
     template <int dim>
@@ -208,22 +346,27 @@ namespace pdfem
         }
     }
 
-#define INSTANTIATE(dim)                                                    \
-  template void CoupledSystem<dim>::Impl::make_pd_chunks();                 \
-  template void CoupledSystem<dim>::Impl::for_each_pd_chunk(                \
-    const std::function<void()> &,                                          \
-    const std::function<void(std::size_t, std::size_t)> &) const;           \
-  template void CoupledSystem<dim>::Impl::import_ghosts(                    \
-    const TrilinosWrappers::MPI::Vector &, TrilinosWrappers::MPI::Vector &) \
-    const;                                                                  \
-  template void CoupledSystem<dim>::Impl::compute_internal_force(           \
-    const TrilinosWrappers::MPI::Vector &);                                 \
-  template void CoupledSystem<dim>::Impl::vmult(                            \
-    TrilinosWrappers::MPI::Vector &, const TrilinosWrappers::MPI::Vector &) \
-    const;                                                                  \
-  template void CoupledSystem<dim>::Impl::make_block_jacobi();              \
-  template void CoupledSystem<dim>::Impl::apply_block_jacobi(               \
-    TrilinosWrappers::MPI::Vector &, const TrilinosWrappers::MPI::Vector &) \
+#define INSTANTIATE(dim)                                                     \
+  template void CoupledSystem<dim>::Impl::make_pd_chunks();                  \
+  template void CoupledSystem<dim>::Impl::for_each_pd_chunk(                 \
+    const std::function<void()> &,                                           \
+    const std::function<void(std::size_t, std::size_t)> &) const;            \
+  template void CoupledSystem<dim>::Impl::import_ghosts(                     \
+    const TrilinosWrappers::MPI::Vector &, TrilinosWrappers::MPI::Vector &)  \
+    const;                                                                   \
+  template void CoupledSystem<dim>::Impl::compute_internal_force(            \
+    const TrilinosWrappers::MPI::Vector &);                                  \
+  template void CoupledSystem<dim>::Impl::vmult(                             \
+    TrilinosWrappers::MPI::Vector &, const TrilinosWrappers::MPI::Vector &)  \
+    const;                                                                   \
+  template void CoupledSystem<dim>::Impl::make_block_jacobi();               \
+  template void CoupledSystem<dim>::Impl::scatter_add(                       \
+    const TrilinosWrappers::MPI::Vector &, TrilinosWrappers::MPI::Vector &)  \
+    const;                                                                   \
+  template std::vector<unsigned int> CoupledSystem<dim>::Impl::family_nodes( \
+    std::size_t) const;                                                      \
+  template void CoupledSystem<dim>::Impl::apply_block_jacobi(                \
+    TrilinosWrappers::MPI::Vector &, const TrilinosWrappers::MPI::Vector &)  \
     const;
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

@@ -220,7 +220,9 @@ namespace pdfem
         }
       else
         {
-          // The coupled tangent: FE cells plus each PD row with its family.
+          // The coupled tangent: FE cells plus each PD row with its family
+          // (family-element models: every node of a family with all of
+          // them, like a cell).
           TrilinosWrappers::SparsityPattern sp(owned, owned, relevant, comm);
           add_cells(sp, false);
           std::vector<types::global_dof_index> cols;
@@ -236,8 +238,15 @@ namespace pdfem
                 for (unsigned int c = 0; c < dim; ++c)
                   cols.push_back(node_dof[families.members[j]][c]);
               std::sort(cols.begin(), cols.end());
-              for (unsigned int c = 0; c < dim; ++c)
-                sp.add_entries(node_dof[k][c], cols.begin(), cols.end(), true);
+              if (layout.family_elements)
+                for (const auto row : cols)
+                  sp.add_entries(row, cols.begin(), cols.end(), true);
+              else
+                for (unsigned int c = 0; c < dim; ++c)
+                  sp.add_entries(node_dof[k][c],
+                                 cols.begin(),
+                                 cols.end(),
+                                 true);
             }
           sp.compress();
           matrix.reinit(sp);
@@ -249,6 +258,8 @@ namespace pdfem
       u_ghosted.reinit(owned, relevant, comm);
       u_tangent.reinit(owned, relevant, comm);
       x_ghosted.reinit(owned, relevant, comm);
+      if (layout.family_elements)
+        scatter_ghosted.reinit(owned, relevant, comm);
       x_masked.reinit(owned, comm);
 
       // Constant (translation) modes over the owned DoFs, for AMG.

@@ -98,6 +98,27 @@ namespace pdfem
       fe_matrix.vmult(out, w_owned);
       const PDModels::NodalField<dim> field = nodal_field(u);
       const PDModels::NodalField<dim> wf    = nodal_field(w);
+      if (layout.family_elements)
+        {
+          // Each family's product on all its nodes, summed at the owners.
+          scatter_ghosted.trilinos_vector().PutScalar(0.);
+          double *g = scatter_ghosted.trilinos_vector()[0];
+          for_each_family_tangent(field,
+                                  [&](const auto &nodes, const auto &blocks) {
+                                    const std::size_t n = nodes.size();
+                                    for (std::size_t a = 0; a < n; ++a)
+                                      {
+                                        Tensor<1, dim> Kw;
+                                        for (std::size_t b = 0; b < n; ++b)
+                                          Kw +=
+                                            blocks[a * n + b] * wf[nodes[b]];
+                                        for (unsigned int c = 0; c < dim; ++c)
+                                          g[relevant_lid[nodes[a]][c]] += Kw[c];
+                                      }
+                                  });
+          scatter_add(scatter_ghosted, out);
+          return;
+        }
       for_each_tangent_row(field, [&](const std::size_t o, const auto &blocks) {
         const unsigned int k  = families.owners[o];
         Tensor<1, dim>     Kw = blocks[0] * wf[k];

@@ -4,6 +4,9 @@
 #include <pdfem/pd/families.h>
 #include <pdfem/pd_models/interface.h>
 
+#include <stdexcept>
+#include <string>
+
 namespace pdfem
 {
   namespace PDModels
@@ -65,6 +68,53 @@ namespace pdfem
       for (std::size_t j = first; j < last; ++j)
         n_intact += f.intact[j];
       return 1. - double(n_intact) / double(last - first);
+    }
+
+    namespace
+    {
+      [[noreturn]] void
+      not_provided(const char *what, const char *layout)
+      {
+        throw std::logic_error(std::string("this PD model does not provide ") +
+                               what + " (it is a " + layout + " model)");
+      }
+    } // namespace
+
+    template <int dim>
+    void
+    Interface<dim>::forces(std::size_t,
+                           std::size_t,
+                           const NodalField<dim> &,
+                           double *) const
+    {
+      not_provided("forces()", "family-element");
+    }
+
+    template <int dim>
+    void
+    Interface<dim>::tangent_row(std::size_t,
+                                const NodalField<dim> &,
+                                std::vector<dealii::Tensor<2, dim>> &) const
+    {
+      not_provided("tangent_row()", "family-element");
+    }
+
+    template <int dim>
+    void
+    Interface<dim>::family_forces(std::size_t,
+                                  const NodalField<dim> &,
+                                  std::vector<dealii::Tensor<1, dim>> &) const
+    {
+      not_provided("family_forces()", "row");
+    }
+
+    template <int dim>
+    void
+    Interface<dim>::family_tangent(std::size_t,
+                                   const NodalField<dim> &,
+                                   std::vector<dealii::Tensor<2, dim>> &) const
+    {
+      not_provided("family_tangent()", "row");
     }
 
 #define INSTANTIATE(dim)                                                       \

@@ -2,6 +2,8 @@
 #include <pdfem/base/config.h>
 #include <pdfem/pd_models/pdlsm.h>
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <array>
 #include <cmath>
 
@@ -109,6 +111,17 @@ namespace pdfem
         return true;
       }
     } // namespace
+
+    void
+    declare_weight_factor(dealii::ParameterHandler &prm)
+    {
+      prm.declare_entry("Weight factor",
+                        "0.33",
+                        dealii::Patterns::Double(),
+                        "pdlsm, pdlsm energy: a in the weight omega = "
+                        "exp(-(|xi|/(a delta))^2); a > 0 (typical: 1/3 for "
+                        "quads, 1/4 for triangles).");
+    }
 
     template <int dim>
     PDLSM<dim>::PDLSM(const double lambda,

@@ -41,16 +41,6 @@ namespace pdfem
           }
       }
 
-      void
-      declare_weight_factor(ParameterHandler &prm)
-      {
-        prm.declare_entry("Weight factor",
-                          "0.33",
-                          Patterns::Double(),
-                          "pdlsm: a in the weight omega = exp(-(|xi|/(a "
-                          "delta))^2); a > 0 (typical: 1/3 for quads, 1/4 "
-                          "for triangles).");
-      }
     } // namespace
 
     /**

@@ -22,40 +22,13 @@
 #include <cmath>
 #include <random>
 
+#include "pd_models_test_tools.h"
 #include <gtest/gtest.h>
 
 namespace
 {
   using namespace dealii;
   using namespace pdfem;
-
-  /// The model @p name with its parameters from @p entries (Peridynamics
-  /// subsection, "RNP/C" style paths for its own subsections).
-  std::shared_ptr<PDModels::Interface<2>>
-  make_model(const std::string                                      &name,
-             const std::vector<std::pair<std::string, std::string>> &entries)
-  {
-    ParameterHandler prm;
-    prm.enter_subsection("Peridynamics");
-    PDModels::registry<2>().declare_parameters(prm);
-    for (const auto &[path, value] : entries)
-      {
-        const auto slash = path.find('/');
-        if (slash == std::string::npos)
-          prm.set(path, value);
-        else
-          {
-            prm.enter_subsection(path.substr(0, slash));
-            prm.set(path.substr(slash + 1), value);
-            prm.leave_subsection();
-          }
-      }
-    std::shared_ptr<PDModels::Interface<2>> model =
-      PDModels::create<2>(name, "test.prm");
-    model->parse_parameters(prm, "test.prm");
-    prm.leave_subsection();
-    return model;
-  }
 
   std::shared_ptr<PDModels::Interface<2>>
   make_rnp(const double C = 1e3, const double beta = 30.)
@@ -66,57 +39,12 @@ namespace
                        {"RNP/beta", std::to_string(beta)}});
   }
 
-  /// A 1 x 1 plate of 8 x 8 jittered quads, cells left of @p pd_left_of
-  /// PD, nu = 1/3 (the bond-based value), with @p model.
-  struct Plate
-  {
-    Plate(std::shared_ptr<PDModels::Interface<2>> model,
-          const double                            pd_left_of = 2.)
-      : tria(MPI_COMM_WORLD)
-    {
-      GridGenerator::subdivided_hyper_cube(tria, 8);
-      GridTools::distort_random(0.15, tria, false, 7);
-      std::vector<bool> pd(tria.n_active_cells());
-      for (const auto &cell : tria.active_cell_iterators())
-        pd[cell->active_cell_index()] = cell->center()[0] < pd_left_of;
-      Coupling::Settings<2> settings;
-      settings.material.youngs_modulus = 1e3;
-      settings.material.poissons_ratio = 1. / 3.;
-      settings.material.plane_stress   = true;
-      settings.horizon_factor          = 3.;
-      settings.pd_model                = model;
-      settings.linear_solver.type      = "direct";
-      system = std::make_unique<Coupling::CoupledSystem<2>>(tria, pd, settings);
-    }
-    parallel::shared::Triangulation<2>          tria;
-    std::unique_ptr<Coupling::CoupledSystem<2>> system;
-  };
-
-  /// A nodal field over every node, stored node by node.
-  struct Field
-  {
-    explicit Field(const unsigned int n_nodes)
-      : values(2 * n_nodes)
-      , index(n_nodes)
-    {
-      for (unsigned int k = 0; k < n_nodes; ++k)
-        index[k] = {{2 * k, 2 * k + 1}};
-    }
-    PDModels::NodalField<2>
-    field() const
-    {
-      return {values.data(), index.data()};
-    }
-    std::vector<double>                      values;
-    std::vector<std::array<unsigned int, 2>> index;
-  };
-
   /// max |tangent row - central differences of the force rows| relative to
   /// the largest tangent entry, over every owner and intact bond.
   double
   tangent_error(const PDModels::Interface<2> &model,
                 const PD::Families           &f,
-                Field                        &u,
+                Field<>                      &u,
                 const double                  h)
   {
     const std::size_t         n = f.owners.size();
@@ -155,7 +83,7 @@ namespace
   /// u = @p amplitude times a smooth field plus a random part.
   void
   deform(const Coupling::CoupledSystem<2> &system,
-         Field                            &u,
+         Field<>                          &u,
          const double                      amplitude)
   {
     std::mt19937                           random(3);
@@ -205,7 +133,7 @@ namespace
           if (broken)
             break_some_bonds(*plate.system);
           const auto &f = plate.system->families();
-          Field       u(plate.system->size().n_nodes);
+          Field<>     u(plate.system->size().n_nodes);
           // rnp: r_c = 1 / sqrt(2 beta) = 0.13; strains of a few 1e-2 on
           // bonds of 0.375 soften some bonds (r = sqrt|xi| S past r_c).
           for (const double amplitude : {1e-3, 0.3})
@@ -239,7 +167,7 @@ namespace
           break_some_bonds(*plate.system);
         const auto    &f = plate.system->families();
         const unsigned n = plate.system->size().n_nodes;
-        Field          u(n);
+        Field<>        u(n);
         deform(*plate.system, u, 0.3);
         // Dense K of the PD term from the tangent rows.
         std::vector<double>       K(4 * n * n, 0.), forces(2 * f.owners.size());

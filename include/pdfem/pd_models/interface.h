@@ -96,6 +96,14 @@ namespace pdfem
       /// volumes (a particle discretisation) instead of integrated over the
       /// PD cells with the FE shape functions.
       bool nodal_body_force = false;
+      /// The model is a sum over families of energies E_k(u_k, u_m : m in
+      /// the intact bonds of k) (an energy form, specs/004 §4 issue 16):
+      /// family k's force acts on its owner and on every member, so that
+      /// row j gathers the families of every node within a horizon of j
+      /// (two horizons of columns). The system then calls family_forces()
+      /// and family_tangent() instead of forces() and tangent_row(), and
+      /// scatters their blocks like FE cell contributions.
+      bool family_elements = false;
     };
 
     /**
@@ -191,6 +199,10 @@ namespace pdfem
       symmetric() const = 0;
 
       /**
+       * Row models (the default layout) override forces() and
+       * tangent_row(); family-element models family_forces() and
+       * family_tangent(). The defaults throw std::logic_error.
+       *
        * F_k for the owners [@p begin, @p end) at @p u, into
        * f[dim o + c] (force units; overwritten). The system discards the
        * rows of decoupled owners (no intact bond, no FE cell: held).
@@ -199,7 +211,7 @@ namespace pdfem
       forces(std::size_t            begin,
              std::size_t            end,
              const NodalField<dim> &u,
-             double                *f) const = 0;
+             double                *f) const;
 
       /**
        * The tangent row of owner @p o at @p u: blocks[0] = dF_k / du_k,
@@ -209,7 +221,27 @@ namespace pdfem
       virtual void
       tangent_row(std::size_t                          o,
                   const NodalField<dim>               &u,
-                  std::vector<dealii::Tensor<2, dim>> &blocks) const = 0;
+                  std::vector<dealii::Tensor<2, dim>> &blocks) const;
+
+      /**
+       * With Layout::family_elements: the force of family @p o at @p u on
+       * its owner (f[0]) and on its i-th intact member (f[1 + i]), in
+       * family order (resized here): dE_o / du.
+       */
+      virtual void
+      family_forces(std::size_t                          o,
+                    const NodalField<dim>               &u,
+                    std::vector<dealii::Tensor<1, dim>> &f) const;
+
+      /**
+       * With Layout::family_elements: the tangent of family_forces(),
+       * blocks[a (n + 1) + b] = d f_a / d u_b for the n + 1 nodes of the
+       * family (owner first, then the intact members; resized here).
+       */
+      virtual void
+      family_tangent(std::size_t                          o,
+                     const NodalField<dim>               &u,
+                     std::vector<dealii::Tensor<2, dim>> &blocks) const;
 
       /// The nonlocal displacement gradient grad u (component i, direction
       /// j) at owner @p o, for the nodal stress C : sym(grad u).

@@ -7,10 +7,20 @@
 
 #include <vector>
 
+namespace dealii
+{
+  class ParameterHandler;
+}
+
 namespace pdfem
 {
   namespace PDModels
   {
+    /// Declare Peridynamics/Weight factor (a in the Gaussian weight of the
+    /// PDLSM fits), shared by the models that use it.
+    void
+    declare_weight_factor(dealii::ParameterHandler &prm);
+
     /**
      * Peridynamic least squares minimisation (PDLSM; Madenci, Dorduncu & Gu,
      * CMAME 348 (2019) 846; as coupled with FE by Liu & Xin, EFM 252 (2021)

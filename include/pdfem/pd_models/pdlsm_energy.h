@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef PDFEM_PD_MODELS_PDLSM_ENERGY_H
+#define PDFEM_PD_MODELS_PDLSM_ENERGY_H
+
+#include <pdfem/pd_models/interface.h>
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace pdfem
+{
+  namespace PDModels
+  {
+    template <int dim>
+    class PDLSM;
+
+    /**
+     * The energy form of the PDLSM operator ("pdlsm energy"; issue 16,
+     * doc/theory.md §9): the PD forces are the gradient of
+     *
+     *   E = sum_k V_k^pd [ W(eps_k) + (G_s / 2) sum_i beta_i |z_i|^2 ],
+     *   eps_k = sym(H_k),  H_k = sum_{a in k's family and k} u_a (x) g_ka,
+     *   z_i = u_{m_i} - u_k - H_k xi_i,
+     *
+     * with W the isotropic strain energy density (lambda, mu in use), the
+     * least-squares gradient weights g_ka of the family of k (linear fit, or
+     * PDLSM's quadratic one; g_kk = -sum of the members'), and beta_i =
+     * omega_i V_i / (|xi_i|^2 sum omega V) the normalised Gaussian weights.
+     *
+     * - Integration-constraint correction (variationally consistent nodal
+     *   integration, Chen et al. 2001): g_ka += (P_k c)_a, with P_k = W_k
+     *   (I - Pi_k) the weighted residual of the linear fit over the family
+     *   (so constant and linear fields keep their exact gradients), and c
+     *   solving sum_k V_k P_k c = s - sum_k V_k g_k by preconditioned CG
+     *   (symmetric positive semi-definite, consistent right-hand side).
+     *   Then sum_k V_k g_kj = s_j, the node's share of the PD region's
+     *   boundary vector, and the coupled patch test is exact.
+     * - Stabilisation (Silling, CMAME 322 (2017)): the bond penalty on the
+     *   non-affine part z_i, modulus G_s = Stabilisation x mu; it vanishes
+     *   on linear fields and removes the zero-energy modes of the nodal
+     *   integration.
+     *
+     * E is a sum of quadratic forms of u, so the model is linear, the
+     * tangent symmetric and the forces of every family sum to zero (H is
+     * unchanged by a translation), with or without broken bonds. Broken
+     * bonds leave the family: its weights are fitted again over the intact
+     * ones and the correction is solved again.
+     */
+    template <int dim>
+    class PDLSMEnergy : public Interface<dim>
+    {
+    public:
+      void
+      parse_parameters(dealii::ParameterHandler &prm,
+                       const std::string        &file) override;
+
+      Layout
+      layout() const override;
+
+      void
+      initialize(const Region<dim> &region) override;
+
+      void
+      bonds_changed(const std::vector<std::size_t> &changed,
+                    bool                            free_surfaces) override;
+
+      bool
+      linear() const override
+      {
+        return true;
+      }
+
+      bool
+      symmetric() const override
+      {
+        return true;
+      }
+
+      void
+      family_forces(std::size_t                          o,
+                    const NodalField<dim>               &u,
+                    std::vector<dealii::Tensor<1, dim>> &f) const override;
+
+      void
+      family_tangent(std::size_t                          o,
+                     const NodalField<dim>               &u,
+                     std::vector<dealii::Tensor<2, dim>> &K) const override;
+
+      dealii::Tensor<2, dim>
+      displacement_gradient(std::size_t            o,
+                            const NodalField<dim> &u) const override;
+
+      std::vector<std::pair<std::string, double>>
+      constants() const override;
+
+    private:
+      /// Fit the gradient weights of family @p o over its intact bonds;
+      /// false if they cannot carry the fit (weights left zero).
+      bool
+      fit(std::size_t o);
+      /// Solve for the integration-constraint correction of every family
+      /// (collective; pdlsm_energy_correction.cc).
+      void
+      solve_integration_constraint();
+      /// The corrected gradient weight of family @p o's slot (0: owner,
+      /// 1 + j - offsets[o]: bond j).
+      dealii::Tensor<1, dim>
+      gradient_weight(std::size_t o, std::size_t slot) const;
+      /// Family @p o's nodes (owner, intact members), corrected weights,
+      /// bond vectors and stabilisation weights.
+      void
+      family_weights(std::size_t                          o,
+                     std::vector<unsigned int>           &nodes,
+                     std::vector<dealii::Tensor<1, dim>> &g,
+                     std::vector<dealii::Tensor<1, dim>> &bond_vector,
+                     std::vector<double>                 &beta) const;
+
+      double                      weight_factor = 0.33;
+      bool                        quadratic_fit = false;
+      double                      stabilisation = 1.;
+      bool                        correct       = true;
+      std::unique_ptr<PDLSM<dim>> pdlsm;
+      /// Least-squares weights: per bond (zero when broken) and per owner.
+      std::vector<dealii::Tensor<1, dim>> weight, owner_weight;
+      std::vector<std::uint8_t>           fitted;
+      /// The correction (P_k c) per owner slot (dim each), then per bond.
+      std::vector<double> correction;
+      /// The correction's global unknown c (dim per node), kept as the
+      /// next solve's start.
+      std::vector<double> correction_potential;
+      /// |sum_k V_k g_kj - s_j| / |s| after the last solve, and the CG
+      /// iterations of every solve so far.
+      double       constraint_residual   = 0.;
+      unsigned int correction_iterations = 0;
+      /// fit()'s work space.
+      std::vector<dealii::Tensor<1, dim>>          xi, a;
+      std::vector<double>                          volume;
+      std::vector<dealii::SymmetricTensor<2, dim>> b;
+      std::vector<std::size_t>                     bond;
+    };
+  } // namespace PDModels
+} // namespace pdfem
+
+#endif

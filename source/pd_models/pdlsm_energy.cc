@@ -1,0 +1,399 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The PD model "pdlsm energy": the energy form of the PDLSM operator, with
+// the integration-constraint correction of its gradient weights and a
+// stabilisation that vanishes on linear fields (issue 16, doc/theory.md
+// §9). A family-element model: family k's energy acts on all its nodes.
+#include <pdfem/base/config.h>
+#include <pdfem/base/exceptions.h>
+#include <pdfem/base/parameter_tools.h>
+#include <pdfem/pd/families.h>
+#include <pdfem/pd_models/interface.h>
+#include <pdfem/pd_models/pdlsm.h>
+#include <pdfem/pd_models/pdlsm_energy.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace pdfem
+{
+  namespace PDModels
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      void
+      declare_energy_form(ParameterHandler &prm)
+      {
+        declare_weight_factor(prm);
+        prm.enter_subsection("Energy form");
+        prm.declare_entry(
+          "Gradient fit",
+          "linear",
+          Patterns::Selection("linear|quadratic"),
+          "pdlsm energy: the least-squares fit the gradient weights come "
+          "from: linear (first order; the stable time step of FE) or "
+          "quadratic (PDLSM's second-order fit; more accurate on smooth "
+          "fields, about half the stable time step on irregular meshes).");
+        prm.declare_entry(
+          "Stabilisation",
+          "1",
+          Patterns::Double(),
+          "pdlsm energy: the modulus of the bond penalty on the non-affine "
+          "part of each bond, eta - grad u xi, as a multiple of the shear "
+          "modulus mu; >= 0 (0 leaves zero-energy modes).");
+        prm.declare_entry(
+          "Integration correction",
+          "true",
+          Patterns::Bool(),
+          "pdlsm energy: correct the gradient weights so that sum_k V_k "
+          "g_kj = s_j (the integration constraint; the patch test holds). "
+          "false: the plain least-squares weights.");
+        prm.leave_subsection();
+      }
+    } // namespace
+
+    template <int dim>
+    void
+    PDLSMEnergy<dim>::parse_parameters(ParameterHandler  &prm,
+                                       const std::string &file)
+    {
+      weight_factor = prm.get_double("Weight factor");
+      if (!(weight_factor > 0.))
+        throw InputError(file,
+                         "Peridynamics/Weight factor",
+                         "a = " + number(weight_factor) + " is not positive",
+                         "a > 0");
+      prm.enter_subsection("Energy form");
+      quadratic_fit = prm.get("Gradient fit") == "quadratic";
+      stabilisation = prm.get_double("Stabilisation");
+      correct       = prm.get_bool("Integration correction");
+      prm.leave_subsection();
+      if (!(stabilisation >= 0.) || !std::isfinite(stabilisation))
+        throw InputError(file,
+                         "Peridynamics/Energy form/Stabilisation",
+                         number(stabilisation) + " is not allowed",
+                         "a number >= 0 (a multiple of the shear modulus)");
+    }
+
+    template <int dim>
+    Layout
+    PDLSMEnergy<dim>::layout() const
+    {
+      Layout l;
+      l.family_elements = true;
+      return l;
+    }
+
+    template <int dim>
+    bool
+    PDLSMEnergy<dim>::fit(const std::size_t o)
+    {
+      // The least-squares gradient weights of family o over its intact
+      // bonds: a_i (member i), g_k = -sum_i a_i (owner).
+      const PD::Families &f     = *this->region.families;
+      const auto         &x     = *this->region.position;
+      const unsigned int  k     = f.owners[o];
+      const double        delta = (*this->region.horizon)[k];
+      xi.clear();
+      volume.clear();
+      bond.clear();
+      for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+        {
+          weight[j] = Tensor<1, dim>();
+          if (f.intact[j])
+            {
+              xi.push_back(x[f.members[j]] - x[k]);
+              volume.push_back((*this->region.volume)[f.members[j]]);
+              bond.push_back(j);
+            }
+        }
+      owner_weight[o] = Tensor<1, dim>();
+      bool fitted     = false;
+      if (quadratic_fit)
+        fitted = pdlsm->compute_weights(xi, volume, delta, a, b);
+      else if (bond.size() >= dim)
+        {
+          // M = sum_i w_i s_i (x) s_i in s = xi / delta; a_i = M^-1 w_i s_i
+          // / delta. Rejected when M is (nearly) singular: collinear (2D)
+          // or coplanar (3D) bonds.
+          const double            inv_a2 = 1. / (weight_factor * weight_factor);
+          SymmetricTensor<2, dim> M;
+          std::vector<double>     w(bond.size());
+          for (std::size_t i = 0; i < bond.size(); ++i)
+            {
+              const Tensor<1, dim> s = xi[i] / delta;
+              w[i]                   = std::exp(-(s * s) * inv_a2) * volume[i];
+              M += w[i] * symmetrize(outer_product(s, s));
+            }
+          const double scale = trace(M);
+          if (scale > 0. && determinant(M) > 1e-10 * std::pow(scale, dim))
+            {
+              const SymmetricTensor<2, dim> M_inv = invert(M);
+              a.resize(bond.size());
+              for (std::size_t i = 0; i < bond.size(); ++i)
+                a[i] = w[i] * (M_inv * (xi[i] / delta)) / delta;
+              fitted = true;
+            }
+        }
+      if (!fitted)
+        return false;
+      for (std::size_t i = 0; i < bond.size(); ++i)
+        {
+          weight[bond[i]] = a[i];
+          owner_weight[o] -= a[i];
+        }
+      return true;
+    }
+
+    template <int dim>
+    void
+    PDLSMEnergy<dim>::initialize(const Region<dim> &r)
+    {
+      this->region = r;
+      pdlsm = std::make_unique<PDLSM<dim>>(r.lambda, r.mu, weight_factor);
+      const PD::Families &f = *r.families;
+      weight.assign(f.n_bonds(), Tensor<1, dim>());
+      owner_weight.assign(f.owners.size(), Tensor<1, dim>());
+      fitted.assign(f.owners.size(), 0);
+      unsigned int       n_bad = 0;
+      std::ostringstream where;
+      for (std::size_t o = 0; o < f.owners.size(); ++o)
+        {
+          fitted[o] = fit(o);
+          if (!fitted[o] && n_bad++ == 0)
+            where << " (e.g. the node at (" << (*r.position)[f.owners[o]]
+                  << ") with " << f.offsets[o + 1] - f.offsets[o]
+                  << " members)";
+        }
+      const unsigned int n_bad_total = Utilities::MPI::sum(n_bad, r.comm);
+      if (n_bad_total > 0)
+        throw InputError(r.source_file,
+                         "Peridynamics/Horizon factor",
+                         std::to_string(n_bad_total) +
+                           " PD node(s) have too few effective family "
+                           "members for the " +
+                           (quadratic_fit ? "quadratic" : "linear") +
+                           " gradient fit with a = " + number(weight_factor) +
+                           where.str(),
+                         "a larger Horizon factor or Weight factor");
+      correction.assign(dim * f.owners.size() + dim * f.n_bonds(), 0.);
+      if (correct)
+        solve_integration_constraint();
+    }
+
+    template <int dim>
+    void
+    PDLSMEnergy<dim>::bonds_changed(const std::vector<std::size_t> &changed,
+                                    bool)
+    {
+      // The energy of a family is that of its intact bonds: its weights
+      // are fitted again over them (either crack-face choice: the energy
+      // form has no separate boundary term to keep). A family left unable
+      // to carry the fit stores no strain energy (its stabilisation bonds
+      // remain).
+      for (const std::size_t o : changed)
+        fitted[o] = fit(o);
+      // Collective: every rank solves, whether its own families changed.
+      if (correct)
+        solve_integration_constraint();
+    }
+
+    template <int dim>
+    Tensor<1, dim>
+    PDLSMEnergy<dim>::gradient_weight(const std::size_t o,
+                                      const std::size_t slot) const
+    {
+      // slot 0: the owner; slot 1 + j - offsets[o]: bond j.
+      const PD::Families &f = *this->region.families;
+      Tensor<1, dim>      g =
+        slot == 0 ? owner_weight[o] : weight[f.offsets[o] + slot - 1];
+      if (correct)
+        {
+          const std::size_t base =
+            slot == 0 ? dim * o :
+                        dim * f.owners.size() + dim * (f.offsets[o] + slot - 1);
+          for (unsigned int c = 0; c < dim; ++c)
+            g[c] += correction[base + c];
+        }
+      return g;
+    }
+
+    template <int dim>
+    void
+    PDLSMEnergy<dim>::family_weights(const std::size_t            o,
+                                     std::vector<unsigned int>   &nodes,
+                                     std::vector<Tensor<1, dim>> &g,
+                                     std::vector<Tensor<1, dim>> &bond_vector,
+                                     std::vector<double>         &beta) const
+    {
+      // The family's nodes (owner, intact members), their corrected
+      // gradient weights, the bonds and the stabilisation weights
+      // beta_i = w_i / (sum w |xi_i|^2) (normalised Gaussian weights).
+      const PD::Families &f      = *this->region.families;
+      const auto         &x      = *this->region.position;
+      const unsigned int  k      = f.owners[o];
+      const double        delta  = (*this->region.horizon)[k];
+      const double        inv_a2 = 1. / (weight_factor * weight_factor);
+      nodes.assign(1, k);
+      g.assign(1, fitted[o] ? gradient_weight(o, 0) : Tensor<1, dim>());
+      bond_vector.clear();
+      beta.clear();
+      double sum = 0.;
+      for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+        if (f.intact[j])
+          {
+            const unsigned int   m  = f.members[j];
+            const Tensor<1, dim> bv = x[m] - x[k];
+            nodes.push_back(m);
+            g.push_back(fitted[o] ? gradient_weight(o, 1 + j - f.offsets[o]) :
+                                    Tensor<1, dim>());
+            bond_vector.push_back(bv);
+            const double w = std::exp(-(bv * bv) / (delta * delta) * inv_a2) *
+                             (*this->region.volume)[m];
+            beta.push_back(w / (bv * bv));
+            sum += w;
+          }
+      for (double &bt : beta)
+        bt /= sum;
+    }
+
+    template <int dim>
+    void
+    PDLSMEnergy<dim>::family_forces(const std::size_t            o,
+                                    const NodalField<dim>       &u,
+                                    std::vector<Tensor<1, dim>> &f) const
+    {
+      // f_a = V_k sigma_k g_a (strain energy) + G_s V_k sum_i beta_i C_ia
+      // z_i (stabilisation), z_i = u_mi - u_k - H xi_i, H = sum_a u_a (x)
+      // g_a, C_ia = [a = m_i] - [a = k] - g_a . xi_i.
+      std::vector<unsigned int>   nodes;
+      std::vector<Tensor<1, dim>> g, bond_vector;
+      std::vector<double>         beta;
+      family_weights(o, nodes, g, bond_vector, beta);
+      const std::size_t n = nodes.size();
+      const double      V = (*this->region.pd_volume)[nodes[0]];
+      Tensor<2, dim>    H;
+      for (std::size_t a = 0; a < n; ++a)
+        H += outer_product(u[nodes[a]], g[a]);
+      const Tensor<2, dim> sigma = pdlsm->stress(H);
+      f.resize(n);
+      for (std::size_t a = 0; a < n; ++a)
+        f[a] = V * (sigma * g[a]);
+      if (stabilisation > 0.)
+        {
+          const double   G   = stabilisation * this->region.mu * V;
+          const auto     u_k = u[nodes[0]];
+          Tensor<2, dim> Q; // sum_i beta_i z_i (x) xi_i
+          for (std::size_t i = 0; i + 1 < n; ++i)
+            {
+              const Tensor<1, dim> z =
+                u[nodes[i + 1]] - u_k - H * bond_vector[i];
+              f[i + 1] += G * beta[i] * z;
+              f[0] -= G * beta[i] * z;
+              Q += beta[i] * outer_product(z, bond_vector[i]);
+            }
+          for (std::size_t a = 0; a < n; ++a)
+            f[a] -= G * (Q * g[a]);
+        }
+    }
+
+    template <int dim>
+    void
+    PDLSMEnergy<dim>::family_tangent(const std::size_t o,
+                                     const NodalField<dim> &,
+                                     std::vector<Tensor<2, dim>> &K) const
+    {
+      // Strain energy: K_ab(i, j) = V (lambda g_a,i g_b,j + mu (delta_ij
+      // g_a . g_b + g_a,j g_b,i)). Stabilisation: G_s V (C^T beta C)_ab I
+      // with C^T beta C = S_E - p_a . g_b - p_b . g_a + g_a . M g_b,
+      // S_E the bond graph's part, p_a = sum_i beta_i E_ia xi_i and M =
+      // sum_i beta_i xi_i (x) xi_i: O(n^2) instead of O(n^3).
+      std::vector<unsigned int>   nodes;
+      std::vector<Tensor<1, dim>> g, bond_vector;
+      std::vector<double>         beta;
+      family_weights(o, nodes, g, bond_vector, beta);
+      const std::size_t n      = nodes.size();
+      const double      V      = (*this->region.pd_volume)[nodes[0]];
+      const double      lambda = this->region.lambda, mu = this->region.mu;
+      K.assign(n * n, Tensor<2, dim>());
+      for (std::size_t a = 0; a < n; ++a)
+        for (std::size_t b = 0; b < n; ++b)
+          {
+            Tensor<2, dim> &B  = K[a * n + b];
+            const double    gg = g[a] * g[b];
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                B[i][j] = V * (lambda * g[a][i] * g[b][j] +
+                               mu * ((i == j ? gg : 0.) + g[a][j] * g[b][i]));
+          }
+      if (!(stabilisation > 0.))
+        return;
+      const double                G = stabilisation * this->region.mu * V;
+      std::vector<Tensor<1, dim>> p(n);
+      Tensor<2, dim>              M;
+      double                      beta_sum = 0.;
+      for (std::size_t i = 0; i + 1 < n; ++i)
+        {
+          p[i + 1] = beta[i] * bond_vector[i];
+          p[0] -= p[i + 1];
+          M += beta[i] * outer_product(bond_vector[i], bond_vector[i]);
+          beta_sum += beta[i];
+        }
+      for (std::size_t a = 0; a < n; ++a)
+        for (std::size_t b = 0; b < n; ++b)
+          {
+            double s = -(p[a] * g[b]) - (p[b] * g[a]) + g[a] * (M * g[b]);
+            if (a == b)
+              s += a == 0 ? beta_sum : beta[a - 1];
+            else if (a == 0)
+              s -= beta[b - 1];
+            else if (b == 0)
+              s -= beta[a - 1];
+            for (unsigned int i = 0; i < dim; ++i)
+              K[a * n + b][i][i] += G * s;
+          }
+    }
+
+    template <int dim>
+    Tensor<2, dim>
+    PDLSMEnergy<dim>::displacement_gradient(const std::size_t      o,
+                                            const NodalField<dim> &u) const
+    {
+      std::vector<unsigned int>   nodes;
+      std::vector<Tensor<1, dim>> g, bond_vector;
+      std::vector<double>         beta;
+      family_weights(o, nodes, g, bond_vector, beta);
+      Tensor<2, dim> H;
+      for (std::size_t a = 0; a < nodes.size(); ++a)
+        H += outer_product(u[nodes[a]], g[a]);
+      return H;
+    }
+
+    template <int dim>
+    std::vector<std::pair<std::string, double>>
+    PDLSMEnergy<dim>::constants() const
+    {
+      return {{"stabilisation modulus", stabilisation * this->region.mu},
+              {"integration constraint residual", constraint_residual},
+              {"integration correction CG iterations",
+               double(correction_iterations)}};
+    }
+
+#define INSTANTIATE(dim) template class PDLSMEnergy<dim>;
+    PDFEM_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace PDModels
+} // namespace pdfem
+
+PDFEM_REGISTER_PD_MODEL(
+  pdfem::PDModels::PDLSMEnergy,
+  "pdlsm energy",
+  "peridynamic least squares in energy form: the forces are the gradient of "
+  "sum_k V_k W(strain_k) with corrected gradient weights and a bond "
+  "stabilisation; linear, symmetric, conservative",
+  pdfem::PDModels::declare_energy_form)

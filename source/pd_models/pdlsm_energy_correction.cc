@@ -1,0 +1,305 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// "pdlsm energy": the integration-constraint correction of the gradient
+// weights (doc/theory.md §9.2), solved by preconditioned CG over the
+// replicated nodes.
+#include <pdfem/base/config.h>
+#include <pdfem/pd/families.h>
+#include <pdfem/pd_models/pdlsm_energy.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/lac/full_matrix.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace pdfem
+{
+  namespace PDModels
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /**
+       * The weighted linear-fit residual operator of one family, P = W (I -
+       * Phi G^-1 Phi^T W), with Phi = [1, (x_a - x_k) / delta] and W the
+       * normalised weights w_a (owner: its volume; members: omega V). P is
+       * symmetric positive semi-definite and P Phi = 0.
+       */
+      template <int dim>
+      struct FamilyProjector
+      {
+        std::vector<unsigned int>       nodes;
+        std::vector<double>             w;
+        std::vector<Tensor<1, dim + 1>> phi;
+        FullMatrix<double>              G_inv{dim + 1, dim + 1};
+
+        /// y_a += scale (P v)_a (one component; v, y indexed by node).
+        void
+        apply(const double *v, double *y, const double scale) const
+        {
+          Tensor<1, dim + 1> t; // Phi^T W v
+          for (std::size_t a = 0; a < nodes.size(); ++a)
+            t += w[a] * v[nodes[a]] * phi[a];
+          Tensor<1, dim + 1> q; // G^-1 t
+          for (unsigned int i = 0; i < dim + 1; ++i)
+            for (unsigned int j = 0; j < dim + 1; ++j)
+              q[i] += G_inv(i, j) * t[j];
+          for (std::size_t a = 0; a < nodes.size(); ++a)
+            y[nodes[a]] += scale * w[a] * (v[nodes[a]] - phi[a] * q);
+        }
+
+        /// (P)_aa.
+        double
+        diagonal(const std::size_t a) const
+        {
+          double q = 0.;
+          for (unsigned int i = 0; i < dim + 1; ++i)
+            for (unsigned int j = 0; j < dim + 1; ++j)
+              q += phi[a][i] * G_inv(i, j) * phi[a][j];
+          return w[a] - w[a] * w[a] * q;
+        }
+      };
+    } // namespace
+
+    template <int dim>
+    void
+    PDLSMEnergy<dim>::solve_integration_constraint()
+    {
+      const PD::Families &f      = *this->region.families;
+      const auto         &x      = *this->region.position;
+      const auto         &V      = *this->region.pd_volume;
+      const auto         &volume = *this->region.volume;
+      const auto         &s      = *this->region.boundary_area;
+      const unsigned int  n      = x.size();
+      const double        inv_a2 = 1. / (weight_factor * weight_factor);
+
+      // The projectors of the fitted families this rank owns.
+      std::vector<FamilyProjector<dim>> P;
+      std::vector<std::size_t>          family;
+      for (std::size_t o = 0; o < f.owners.size(); ++o)
+        {
+          if (!fitted[o])
+            continue;
+          const unsigned int   k     = f.owners[o];
+          const double         delta = (*this->region.horizon)[k];
+          FamilyProjector<dim> p;
+          p.nodes.push_back(k);
+          p.w.push_back(volume[k]);
+          p.phi.push_back(Tensor<1, dim + 1>());
+          p.phi.back()[0] = 1.;
+          for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+            if (f.intact[j])
+              {
+                const unsigned int   m = f.members[j];
+                const Tensor<1, dim> r = (x[m] - x[k]) / delta;
+                p.nodes.push_back(m);
+                p.w.push_back(std::exp(-(r * r) * inv_a2) * volume[m]);
+                Tensor<1, dim + 1> phi;
+                phi[0] = 1.;
+                for (unsigned int d = 0; d < dim; ++d)
+                  phi[d + 1] = r[d];
+                p.phi.push_back(phi);
+              }
+          double sum = 0.;
+          for (const double w : p.w)
+            sum += w;
+          FullMatrix<double> G(dim + 1, dim + 1);
+          for (std::size_t a = 0; a < p.nodes.size(); ++a)
+            {
+              p.w[a] /= sum;
+              for (unsigned int i = 0; i < dim + 1; ++i)
+                for (unsigned int j = 0; j < dim + 1; ++j)
+                  G(i, j) += p.w[a] * p.phi[a][i] * p.phi[a][j];
+            }
+          p.G_inv.invert(G);
+          P.push_back(std::move(p));
+          family.push_back(o);
+        }
+
+      // A c = r, one column per component: A = sum_k V_k P_k, r_j = s_j -
+      // sum_k V_k g_kj (the plain weights), both summed over the ranks.
+      std::vector<double> rhs(dim * n, 0.), diag(n, 0.);
+      for (std::size_t i = 0; i < P.size(); ++i)
+        {
+          const std::size_t o  = family[i];
+          const double      Vk = V[f.owners[o]];
+          for (std::size_t a = 0; a < P[i].nodes.size(); ++a)
+            diag[P[i].nodes[a]] += Vk * P[i].diagonal(a);
+          for (unsigned int c = 0; c < dim; ++c)
+            rhs[c * n + f.owners[o]] -= Vk * owner_weight[o][c];
+          for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+            for (unsigned int c = 0; c < dim; ++c)
+              rhs[c * n + f.members[j]] -= Vk * weight[j][c];
+        }
+      Utilities::MPI::sum(rhs, this->region.comm, rhs);
+      Utilities::MPI::sum(diag, this->region.comm, diag);
+      std::vector<std::uint8_t> active(n, 0);
+      for (unsigned int j = 0; j < n; ++j)
+        if (diag[j] > 0.)
+          {
+            active[j] = 1;
+            for (unsigned int c = 0; c < dim; ++c)
+              rhs[c * n + j] += s[j][c];
+          }
+
+      // Remove the part of r in A's null space (the linear fields over the
+      // active nodes: r is orthogonal to it up to round-off when the
+      // region is connected) with Gram-Schmidt on 1, x_1, .., x_dim.
+      {
+        std::vector<std::vector<double>> basis;
+        for (unsigned int i = 0; i < dim + 1; ++i)
+          {
+            std::vector<double> q(n, 0.);
+            for (unsigned int j = 0; j < n; ++j)
+              if (active[j])
+                q[j] = i == 0 ? 1. : x[j][i - 1];
+            for (const auto &e : basis)
+              {
+                double dot = 0.;
+                for (unsigned int j = 0; j < n; ++j)
+                  dot += q[j] * e[j];
+                for (unsigned int j = 0; j < n; ++j)
+                  q[j] -= dot * e[j];
+              }
+            double norm = 0.;
+            for (const double v : q)
+              norm += v * v;
+            if (norm > 0.)
+              {
+                for (double &v : q)
+                  v /= std::sqrt(norm);
+                basis.push_back(std::move(q));
+              }
+          }
+        for (unsigned int c = 0; c < dim; ++c)
+          for (const auto &e : basis)
+            {
+              double dot = 0.;
+              for (unsigned int j = 0; j < n; ++j)
+                dot += rhs[c * n + j] * e[j];
+              for (unsigned int j = 0; j < n; ++j)
+                rhs[c * n + j] -= dot * e[j];
+            }
+      }
+
+      const auto product = [&](const std::vector<double> &v,
+                               std::vector<double>       &y) {
+        std::fill(y.begin(), y.end(), 0.);
+        for (std::size_t i = 0; i < P.size(); ++i)
+          for (unsigned int c = 0; c < dim; ++c)
+            P[i].apply(v.data() + c * n,
+                       y.data() + c * n,
+                       V[f.owners[family[i]]]);
+        Utilities::MPI::sum(y, this->region.comm, y);
+      };
+      const auto dot = [&](const std::vector<double> &a,
+                           const std::vector<double> &b) {
+        double sum = 0.;
+        for (std::size_t i = 0; i < a.size(); ++i)
+          sum += a[i] * b[i];
+        return sum;
+      };
+
+      // Jacobi-preconditioned CG from the last solution; stops at a
+      // residual of 1e-13 of |s| (the patch test needs about 1e-12) or
+      // when it stagnates.
+      std::vector<double> &c = correction_potential;
+      c.resize(dim * n, 0.);
+      std::vector<double> r(dim * n), z(dim * n), p(dim * n), q(dim * n);
+      product(c, q);
+      for (std::size_t i = 0; i < r.size(); ++i)
+        r[i] = rhs[i] - q[i];
+      double s_norm = 0.;
+      for (unsigned int j = 0; j < n; ++j)
+        s_norm += s[j] * s[j];
+      s_norm                    = std::sqrt(s_norm);
+      const double tolerance    = 1e-13 * std::max(s_norm, 1e-300);
+      const auto   precondition = [&] {
+        for (unsigned int c_ = 0; c_ < dim; ++c_)
+          for (unsigned int j = 0; j < n; ++j)
+            z[c_ * n + j] = active[j] ? r[c_ * n + j] / diag[j] : 0.;
+      };
+      precondition();
+      p                             = z;
+      double             rz         = dot(r, z);
+      double             best       = std::sqrt(dot(r, r));
+      unsigned int       since_best = 0, it = 0;
+      const unsigned int max_iterations = 20 * n + 100;
+      for (; it < max_iterations && best > tolerance && since_best < 200; ++it)
+        {
+          product(p, q);
+          const double pq = dot(p, q);
+          if (!(pq > 0.))
+            break;
+          const double alpha = rz / pq;
+          for (std::size_t i = 0; i < r.size(); ++i)
+            {
+              c[i] += alpha * p[i];
+              r[i] -= alpha * q[i];
+            }
+          const double norm = std::sqrt(dot(r, r));
+          if (norm < 0.5 * best)
+            {
+              best       = norm;
+              since_best = 0;
+            }
+          else
+            ++since_best;
+          precondition();
+          const double rz_new = dot(r, z);
+          for (std::size_t i = 0; i < p.size(); ++i)
+            p[i] = z[i] + rz_new / rz * p[i];
+          rz = rz_new;
+        }
+      correction_iterations += it;
+
+      // The correction of each owned family's weights, and the constraint
+      // as it now holds: |sum_k V_k g_kj - s_j| relative to |s|.
+      std::fill(correction.begin(), correction.end(), 0.);
+      std::vector<double> Pc(dim * n, 0.), check(dim * n, 0.);
+      for (std::size_t i = 0; i < P.size(); ++i)
+        {
+          const std::size_t o = family[i];
+          for (unsigned int c_ = 0; c_ < dim; ++c_)
+            {
+              for (const unsigned int a : P[i].nodes)
+                Pc[c_ * n + a] = 0.;
+              P[i].apply(c.data() + c_ * n, Pc.data() + c_ * n, 1.);
+            }
+          std::size_t a = 0;
+          for (unsigned int c_ = 0; c_ < dim; ++c_)
+            correction[dim * o + c_] = Pc[c_ * n + f.owners[o]];
+          for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+            if (f.intact[j])
+              {
+                ++a;
+                for (unsigned int c_ = 0; c_ < dim; ++c_)
+                  correction[dim * f.owners.size() + dim * j + c_] =
+                    Pc[c_ * n + P[i].nodes[a]];
+              }
+          const double Vk = V[f.owners[o]];
+          for (unsigned int c_ = 0; c_ < dim; ++c_)
+            check[c_ * n + f.owners[o]] += Vk * gradient_weight(o, 0)[c_];
+          for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+            if (f.intact[j])
+              for (unsigned int c_ = 0; c_ < dim; ++c_)
+                check[c_ * n + f.members[j]] +=
+                  Vk * gradient_weight(o, 1 + j - f.offsets[o])[c_];
+        }
+      Utilities::MPI::sum(check, this->region.comm, check);
+      double error = 0.;
+      for (unsigned int j = 0; j < n; ++j)
+        if (active[j])
+          for (unsigned int c_ = 0; c_ < dim; ++c_)
+            error += std::pow(check[c_ * n + j] - s[j][c_], 2);
+      constraint_residual = std::sqrt(error) / std::max(s_norm, 1e-300);
+    }
+
+#define INSTANTIATE(dim) \
+  template void PDLSMEnergy<dim>::solve_integration_constraint();
+    PDFEM_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace PDModels
+} // namespace pdfem

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Helpers of the PD model tests (pd_models_test.cc, pdlsm_energy_test.cc):
+// a model from Peridynamics parameters, a small coupled plate, a nodal
+// field over every node.
+#ifndef PDFEM_TESTS_UNIT_PD_MODELS_TEST_TOOLS_H
+#define PDFEM_TESTS_UNIT_PD_MODELS_TEST_TOOLS_H
+
+#include <pdfem/coupling/coupled_system.h>
+#include <pdfem/pd_models/interface.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace
+{
+  using namespace dealii;
+  using namespace pdfem;
+
+  /// The model @p name with its parameters from @p entries (Peridynamics
+  /// subsection, "RNP/C" style paths for its own subsections).
+  template <int dim = 2>
+  std::shared_ptr<PDModels::Interface<dim>>
+  make_model(const std::string                                      &name,
+             const std::vector<std::pair<std::string, std::string>> &entries)
+  {
+    ParameterHandler prm;
+    prm.enter_subsection("Peridynamics");
+    PDModels::registry<dim>().declare_parameters(prm);
+    for (const auto &[path, value] : entries)
+      {
+        const auto slash = path.find('/');
+        if (slash == std::string::npos)
+          prm.set(path, value);
+        else
+          {
+            prm.enter_subsection(path.substr(0, slash));
+            prm.set(path.substr(slash + 1), value);
+            prm.leave_subsection();
+          }
+      }
+    std::shared_ptr<PDModels::Interface<dim>> model =
+      PDModels::create<dim>(name, "test.prm");
+    model->parse_parameters(prm, "test.prm");
+    prm.leave_subsection();
+    return model;
+  }
+
+  /// A 1 x 1 plate of 8 x 8 jittered quads, cells left of @p pd_left_of
+  /// PD, nu = 1/3 (the bond-based value), with @p model.
+  struct Plate
+  {
+    Plate(std::shared_ptr<PDModels::Interface<2>> model,
+          const double                            pd_left_of = 2.)
+      : tria(MPI_COMM_WORLD)
+    {
+      GridGenerator::subdivided_hyper_cube(tria, 8);
+      GridTools::distort_random(0.15, tria, false, 7);
+      std::vector<bool> pd(tria.n_active_cells());
+      for (const auto &cell : tria.active_cell_iterators())
+        pd[cell->active_cell_index()] = cell->center()[0] < pd_left_of;
+      Coupling::Settings<2> settings;
+      settings.material.youngs_modulus = 1e3;
+      settings.material.poissons_ratio = 1. / 3.;
+      settings.material.plane_stress   = true;
+      settings.horizon_factor          = 3.;
+      settings.pd_model                = model;
+      settings.linear_solver.type      = "direct";
+      system = std::make_unique<Coupling::CoupledSystem<2>>(tria, pd, settings);
+    }
+    parallel::shared::Triangulation<2>          tria;
+    std::unique_ptr<Coupling::CoupledSystem<2>> system;
+  };
+
+  /// A nodal field over every node, stored node by node.
+  template <int dim = 2>
+  struct Field
+  {
+    explicit Field(const unsigned int n_nodes)
+      : values(dim * n_nodes)
+      , index(n_nodes)
+    {
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        for (unsigned int c = 0; c < dim; ++c)
+          index[k][c] = dim * k + c;
+    }
+    PDModels::NodalField<dim>
+    field() const
+    {
+      return {values.data(), index.data()};
+    }
+    std::vector<double>                        values;
+    std::vector<std::array<unsigned int, dim>> index;
+  };
+} // namespace
+
+#endif
