@@ -8,6 +8,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <sstream>
 
@@ -146,9 +147,41 @@ namespace pdfem
       return unheld;
     }
 
+    template <int dim>
+    ForceBalance<dim>
+    CoupledSystem<dim>::force_balance() const
+    {
+      const Impl       &s = *impl;
+      ForceBalance<dim> balance;
+      double            applied = 0., reacted = 0.;
+      for (const unsigned int k : s.owned_nodes)
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            const auto   i     = s.node_dof[k][c];
+            const double f_int = s.f_int[i], f_ext = s.f_ext[i];
+            balance.internal_resultant[c] += f_int;
+            balance.external_resultant[c] += f_ext;
+            applied += std::abs(f_ext);
+          }
+      for (const unsigned int lid : s.held_lid)
+        {
+          const auto i = s.owned.nth_index_in_set(lid);
+          reacted += std::abs(s.f_int[i] - s.f_ext[i]);
+        }
+      balance.internal_resultant =
+        Utilities::MPI::sum(balance.internal_resultant, s.comm);
+      balance.external_resultant =
+        Utilities::MPI::sum(balance.external_resultant, s.comm);
+      applied      = Utilities::MPI::sum(applied, s.comm);
+      reacted      = Utilities::MPI::sum(reacted, s.comm);
+      balance.load = 0.5 * (applied > 0. ? applied : reacted);
+      return balance;
+    }
+
 #define INSTANTIATE(dim)                                                       \
   template std::vector<std::string> CoupledSystem<dim>::unheld_rigid_motions() \
-    const;
+    const;                                                                     \
+  template ForceBalance<dim> CoupledSystem<dim>::force_balance() const;
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace Coupling

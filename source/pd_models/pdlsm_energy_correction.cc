@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // "pdlsm energy": the integration-constraint correction of the gradient
-// weights (doc/theory.md §9.2), solved by preconditioned CG over the
+// weights (doc/theory.md §12.2), solved by preconditioned CG over the
 // replicated nodes.
 #include <pdfem/base/config.h>
 #include <pdfem/pd/families.h>

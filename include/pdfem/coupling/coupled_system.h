@@ -116,6 +116,40 @@ namespace pdfem
       double max_relative_ghost_force = 0.;
     };
 
+    /**
+     * The balance of the forces at the last residual() (or internal_force()
+     * and external_force()) state: a conservative PD operator's internal
+     * forces sum to zero for any displacement, so under a self-balanced
+     * load the supports carry nothing (issue 16).
+     */
+    template <int dim>
+    struct ForceBalance
+    {
+      /// sum_j f_int,j and sum_j f_ext,j over every DoF (2D: per unit
+      /// thickness).
+      dealii::Tensor<1, dim> internal_resultant, external_resultant;
+      /// The applied load: half the sum of |f_ext,j| over every DoF, or,
+      /// when no force is applied (displacement loading), half the sum of
+      /// the reactions' |f_int,j - f_ext,j| over the held DoFs.
+      double load = 0.;
+
+      /// |sum f_int| / load: what the supports carry beyond the applied
+      /// load's own resultant, relative to it (0 without a load).
+      double
+      imbalance() const
+      {
+        return load > 0. ? internal_resultant.norm() / load : 0.;
+      }
+
+      /// Are the applied forces balanced among themselves (|sum f_ext| <=
+      /// 1e-8 of the load, and some force applied)?
+      bool
+      self_balanced() const
+      {
+        return load > 0. && external_resultant.norm() <= 1e-8 * load;
+      }
+    };
+
     /** Counts that summary.json reports. */
     struct ProblemSize
     {
@@ -417,6 +451,10 @@ namespace pdfem
        */
       std::vector<std::string>
       unheld_rigid_motions() const;
+
+      /// The force balance at the last residual() state (collective).
+      ForceBalance<dim>
+      force_balance() const;
 
       /// Names of the Dirichlet sets (boundaries or points), in input order.
       std::vector<std::string>

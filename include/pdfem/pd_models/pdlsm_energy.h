@@ -20,7 +20,7 @@ namespace pdfem
 
     /**
      * The energy form of the PDLSM operator ("pdlsm energy"; issue 16,
-     * doc/theory.md §9): the PD forces are the gradient of
+     * doc/theory.md §12): the PD forces are the gradient of
      *
      *   E = sum_k V_k^pd [ W(eps_k) + (G_s / 2) sum_i beta_i |z_i|^2 ],
      *   eps_k = sym(H_k),  H_k = sum_{a in k's family and k} u_a (x) g_ka,
