@@ -275,6 +275,22 @@ namespace pdfem
         bt /= sum;
     }
 
+    namespace
+    {
+      /// H = sum_a u_a (x) g_a over a family's nodes.
+      template <int dim>
+      Tensor<2, dim>
+      family_gradient(const std::vector<unsigned int>   &nodes,
+                      const std::vector<Tensor<1, dim>> &g,
+                      const NodalField<dim>             &u)
+      {
+        Tensor<2, dim> H;
+        for (std::size_t a = 0; a < nodes.size(); ++a)
+          H += outer_product(u[nodes[a]], g[a]);
+        return H;
+      }
+    } // namespace
+
     template <int dim>
     void
     PDLSMEnergy<dim>::family_forces(const std::size_t            o,
@@ -288,11 +304,9 @@ namespace pdfem
       std::vector<Tensor<1, dim>> g, bond_vector;
       std::vector<double>         beta;
       family_weights(o, nodes, g, bond_vector, beta);
-      const std::size_t n = nodes.size();
-      const double      V = (*this->region.pd_volume)[nodes[0]];
-      Tensor<2, dim>    H;
-      for (std::size_t a = 0; a < n; ++a)
-        H += outer_product(u[nodes[a]], g[a]);
+      const std::size_t    n     = nodes.size();
+      const double         V     = (*this->region.pd_volume)[nodes[0]];
+      const Tensor<2, dim> H     = family_gradient(nodes, g, u);
       const Tensor<2, dim> sigma = pdlsm->stress(H);
       f.resize(n);
       for (std::size_t a = 0; a < n; ++a)
@@ -381,10 +395,7 @@ namespace pdfem
       std::vector<Tensor<1, dim>> g, bond_vector;
       std::vector<double>         beta;
       family_weights(o, nodes, g, bond_vector, beta);
-      Tensor<2, dim> H;
-      for (std::size_t a = 0; a < nodes.size(); ++a)
-        H += outer_product(u[nodes[a]], g[a]);
-      return H;
+      return family_gradient(nodes, g, u);
     }
 
     template <int dim>
@@ -393,7 +404,7 @@ namespace pdfem
     {
       return {{"stabilisation modulus", stabilisation * this->region.mu},
               {"integration constraint residual", constraint_residual},
-              {"integration correction CG iterations",
+              {"integration correction iterations",
                double(correction_iterations)}};
     }
 

@@ -202,11 +202,11 @@ namespace pdfem
         return sum;
       };
 
-      // Jacobi-preconditioned CG from the last solution; stops at a
+      // Jacobi-preconditioned CG from c = 0; stops at a
       // residual of 1e-13 of |s| (the patch test needs about 1e-12) or
       // when it stagnates.
       std::vector<double> &c = correction_potential;
-      c.resize(dim * n, 0.);
+      c.assign(dim * n, 0.);
       std::vector<double> r(dim * n), z(dim * n), p(dim * n), q(dim * n);
       product(c, q);
       for (std::size_t i = 0; i < r.size(); ++i)
@@ -253,7 +253,7 @@ namespace pdfem
             p[i] = z[i] + rz_new / rz * p[i];
           rz = rz_new;
         }
-      correction_iterations += it;
+      correction_iterations = it;
 
       // The correction of each owned family's weights, and the constraint
       // as it now holds: |sum_k V_k g_kj - s_j| relative to |s|.

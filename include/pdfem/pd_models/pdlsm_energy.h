@@ -102,8 +102,8 @@ namespace pdfem
       /// false if they cannot carry the fit (weights left zero).
       bool
       fit(std::size_t o);
-      /// Solve for the integration-constraint correction of every family
-      /// (collective; pdlsm_energy_correction.cc).
+      /// Solve for the integration-constraint correction of every family,
+      /// once at set-up (collective; pdlsm_energy_correction.cc).
       void
       solve_integration_constraint();
       /// The corrected gradient weight of family @p o's slot (0: owner,
@@ -129,11 +129,10 @@ namespace pdfem
       std::vector<std::uint8_t>           fitted;
       /// The correction (P_k c) per owner slot (dim each), then per bond.
       std::vector<double> correction;
-      /// The correction's global unknown c (dim per node), kept as the
-      /// next solve's start.
+      /// The correction's global unknown c (dim per node).
       std::vector<double> correction_potential;
-      /// |sum_k V_k g_kj - s_j| / |s| after the last solve, and the CG
-      /// iterations of every solve so far.
+      /// |sum_k V_k g_kj - s_j| / |s| after the solve, and its CG
+      /// iterations.
       double       constraint_residual   = 0.;
       unsigned int correction_iterations = 0;
       /// fit()'s work space.
