@@ -67,8 +67,6 @@ namespace pdfem
     {
       // The reverse of the ghost import, summing: every rank's
       // contributions to a DoF (owned or ghost there) reach its owner.
-      if (scatter_owned.size() != y.size())
-        scatter_owned.reinit(owned, comm);
       Epetra_FEVector &sum = scatter_owned.trilinos_vector();
       sum.PutScalar(0.);
       AssertThrow(sum.Export(contributions.trilinos_vector(),

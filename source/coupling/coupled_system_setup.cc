@@ -259,7 +259,10 @@ namespace pdfem
       u_tangent.reinit(owned, relevant, comm);
       x_ghosted.reinit(owned, relevant, comm);
       if (layout.family_elements)
-        scatter_ghosted.reinit(owned, relevant, comm);
+        {
+          scatter_ghosted.reinit(owned, relevant, comm);
+          scatter_owned.reinit(owned, comm);
+        }
       x_masked.reinit(owned, comm);
 
       // Constant (translation) modes over the owned DoFs, for AMG.

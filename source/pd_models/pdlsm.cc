@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/config.h>
+#include <pdfem/base/exceptions.h>
+#include <pdfem/pd/families.h>
+#include <pdfem/pd_models/interface.h>
 #include <pdfem/pd_models/pdlsm.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <array>
 #include <cmath>
+#include <sstream>
 
 namespace pdfem
 {
@@ -121,6 +126,45 @@ namespace pdfem
                         "pdlsm, pdlsm energy: a in the weight omega = "
                         "exp(-(|xi|/(a delta))^2); a > 0 (typical: 1/3 for "
                         "quads, 1/4 for triangles).");
+    }
+
+    double
+    parse_weight_factor(dealii::ParameterHandler &prm, const std::string &file)
+    {
+      const double a = prm.get_double("Weight factor");
+      if (!(a > 0.))
+        throw InputError(file,
+                         "Peridynamics/Weight factor",
+                         "a = " + number(a) + " is not positive",
+                         "a > 0");
+      return a;
+    }
+
+    template <int dim>
+    void
+    fit_every_family(const Region<dim>                      &region,
+                     const std::function<bool(std::size_t)> &fit,
+                     const std::string                      &fit_name,
+                     const double                            a,
+                     const std::string                      &advice)
+    {
+      const PD::Families &f     = *region.families;
+      unsigned int        n_bad = 0;
+      std::ostringstream  where;
+      for (std::size_t o = 0; o < f.owners.size(); ++o)
+        if (!fit(o) && n_bad++ == 0)
+          where << " (e.g. the node at (" << (*region.position)[f.owners[o]]
+                << ") with " << f.offsets[o + 1] - f.offsets[o] << " members)";
+      const unsigned int n_bad_total =
+        dealii::Utilities::MPI::sum(n_bad, region.comm);
+      if (n_bad_total > 0)
+        throw InputError(region.source_file,
+                         "Peridynamics/Horizon factor",
+                         std::to_string(n_bad_total) +
+                           " PD node(s) have too few effective family "
+                           "members for the " +
+                           fit_name + " with a = " + number(a) + where.str(),
+                         advice);
     }
 
     template <int dim>
@@ -243,7 +287,14 @@ namespace pdfem
              2. * mu * eps;
     }
 
-#define INSTANTIATE(dim) template class PDLSM<dim>;
+#define INSTANTIATE(dim)                      \
+  template class PDLSM<dim>;                  \
+  template void fit_every_family<dim>(        \
+    const Region<dim> &,                      \
+    const std::function<bool(std::size_t)> &, \
+    const std::string &,                      \
+    double,                                   \
+    const std::string &);
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace PDModels

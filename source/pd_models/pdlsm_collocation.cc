@@ -2,17 +2,13 @@
 // The PD model "pdlsm": the collocated PDLSM operator of PDLSM-FEM (the
 // strong form L_k = div sigma at every PD node plus the boundary term).
 #include <pdfem/base/config.h>
-#include <pdfem/base/exceptions.h>
-#include <pdfem/base/parameter_tools.h>
 #include <pdfem/pd/families.h>
 #include <pdfem/pd_models/interface.h>
 #include <pdfem/pd_models/pdlsm.h>
 
-#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <sstream>
 
 namespace pdfem
 {
@@ -69,12 +65,7 @@ namespace pdfem
       void
       parse_parameters(ParameterHandler &prm, const std::string &file) override
       {
-        weight_factor = prm.get_double("Weight factor");
-        if (!(weight_factor > 0.))
-          throw InputError(file,
-                           "Peridynamics/Weight factor",
-                           "a = " + number(weight_factor) + " is not positive",
-                           "a > 0");
+        weight_factor = parse_weight_factor(prm, file);
       }
 
       void
@@ -172,22 +163,15 @@ namespace pdfem
       // Every family must carry the second-order fit over its whole
       // initial family: if one cannot, the horizon is too small for the
       // mesh (or the weight too narrow).
-      unsigned int       n_bad = 0;
-      std::ostringstream where;
-      for (std::size_t o = 0; o < f.owners.size(); ++o)
-        if (!fit(o, [](std::size_t) { return true; }) && n_bad++ == 0)
-          where << " (e.g. the node at (" << (*r.position)[f.owners[o]]
-                << ") with " << f.offsets[o + 1] - f.offsets[o] << " members)";
-      const unsigned int n_bad_total = Utilities::MPI::sum(n_bad, r.comm);
-      if (n_bad_total > 0)
-        throw InputError(r.source_file,
-                         "Peridynamics/Horizon factor",
-                         std::to_string(n_bad_total) +
-                           " PD node(s) have too few effective family "
-                           "members for the second-order PDLSM fit with a = " +
-                           number(weight_factor) + where.str(),
-                         "a larger Horizon factor or Weight factor (m >= 3 "
-                         "with a >= 0.25 is safe on quads and hexes)");
+      fit_every_family(
+        r,
+        [&](const std::size_t o) {
+          return fit(o, [](std::size_t) { return true; });
+        },
+        "second-order PDLSM fit",
+        weight_factor,
+        "a larger Horizon factor or Weight factor (m >= 3 with a >= 0.25 is "
+        "safe on quads and hexes)");
     }
 
     template <int dim>

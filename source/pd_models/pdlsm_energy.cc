@@ -11,12 +11,10 @@
 #include <pdfem/pd_models/pdlsm.h>
 #include <pdfem/pd_models/pdlsm_energy.h>
 
-#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <cmath>
-#include <sstream>
 
 namespace pdfem
 {
@@ -62,12 +60,7 @@ namespace pdfem
     PDLSMEnergy<dim>::parse_parameters(ParameterHandler  &prm,
                                        const std::string &file)
     {
-      weight_factor = prm.get_double("Weight factor");
-      if (!(weight_factor > 0.))
-        throw InputError(file,
-                         "Peridynamics/Weight factor",
-                         "a = " + number(weight_factor) + " is not positive",
-                         "a > 0");
+      weight_factor = parse_weight_factor(prm, file);
       prm.enter_subsection("Energy form");
       quadratic_fit = prm.get("Gradient fit") == "quadratic";
       stabilisation = prm.get_double("Stabilisation");
@@ -102,14 +95,18 @@ namespace pdfem
       xi.clear();
       volume.clear();
       bond.clear();
+      const double inv_a2 = 1. / (weight_factor * weight_factor);
       for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
         {
-          weight[j] = Tensor<1, dim>();
+          weight[j]      = Tensor<1, dim>();
+          bond_weight[j] = 0.;
           if (f.intact[j])
             {
               xi.push_back(x[f.members[j]] - x[k]);
               volume.push_back((*this->region.volume)[f.members[j]]);
               bond.push_back(j);
+              const Tensor<1, dim> s = xi.back() / delta;
+              bond_weight[j] = std::exp(-(s * s) * inv_a2) * volume.back();
             }
         }
       owner_weight[o] = Tensor<1, dim>();
@@ -121,14 +118,11 @@ namespace pdfem
           // M = sum_i w_i s_i (x) s_i in s = xi / delta; a_i = M^-1 w_i s_i
           // / delta. Rejected when M is (nearly) singular: collinear (2D)
           // or coplanar (3D) bonds.
-          const double            inv_a2 = 1. / (weight_factor * weight_factor);
           SymmetricTensor<2, dim> M;
-          std::vector<double>     w(bond.size());
           for (std::size_t i = 0; i < bond.size(); ++i)
             {
               const Tensor<1, dim> s = xi[i] / delta;
-              w[i]                   = std::exp(-(s * s) * inv_a2) * volume[i];
-              M += w[i] * symmetrize(outer_product(s, s));
+              M += bond_weight[bond[i]] * symmetrize(outer_product(s, s));
             }
           const double scale = trace(M);
           if (scale > 0. && determinant(M) > 1e-10 * std::pow(scale, dim))
@@ -136,7 +130,7 @@ namespace pdfem
               const SymmetricTensor<2, dim> M_inv = invert(M);
               a.resize(bond.size());
               for (std::size_t i = 0; i < bond.size(); ++i)
-                a[i] = w[i] * (M_inv * (xi[i] / delta)) / delta;
+                a[i] = bond_weight[bond[i]] * (M_inv * (xi[i] / delta)) / delta;
               fitted = true;
             }
         }
@@ -158,30 +152,18 @@ namespace pdfem
       pdlsm = std::make_unique<PDLSM<dim>>(r.lambda, r.mu, weight_factor);
       const PD::Families &f = *r.families;
       weight.assign(f.n_bonds(), Tensor<1, dim>());
+      bond_weight.assign(f.n_bonds(), 0.);
       owner_weight.assign(f.owners.size(), Tensor<1, dim>());
       fitted.assign(f.owners.size(), 0);
-      unsigned int       n_bad = 0;
-      std::ostringstream where;
-      for (std::size_t o = 0; o < f.owners.size(); ++o)
-        {
+      fit_every_family(
+        r,
+        [&](const std::size_t o) {
           fitted[o] = fit(o);
-          if (!fitted[o] && n_bad++ == 0)
-            where << " (e.g. the node at (" << (*r.position)[f.owners[o]]
-                  << ") with " << f.offsets[o + 1] - f.offsets[o]
-                  << " members)";
-        }
-      const unsigned int n_bad_total = Utilities::MPI::sum(n_bad, r.comm);
-      if (n_bad_total > 0)
-        throw InputError(r.source_file,
-                         "Peridynamics/Horizon factor",
-                         std::to_string(n_bad_total) +
-                           " PD node(s) have too few effective family "
-                           "members for the " +
-                           (quadratic_fit ? "quadratic" : "linear") +
-                           " gradient fit with a = " + number(weight_factor) +
-                           where.str(),
-                         "a larger Horizon factor or Weight factor");
-      correction.assign(dim * f.owners.size() + dim * f.n_bonds(), 0.);
+          return fitted[o] != 0;
+        },
+        std::string(quadratic_fit ? "quadratic" : "linear") + " gradient fit",
+        weight_factor,
+        "a larger Horizon factor or Weight factor");
       if (correct)
         solve_integration_constraint();
     }
@@ -202,60 +184,24 @@ namespace pdfem
       // the gap's volume; -7.7 %). Refitted locally: +3.2 %
       // (doc/theory.md §12.3). A family left unable to carry the fit
       // stores no strain energy (its stabilisation bonds remain).
-      const PD::Families &f = *this->region.families;
       for (const std::size_t o : changed)
-        {
-          fitted[o] = fit(o);
-          if (!correct)
-            continue;
-          for (unsigned int c = 0; c < dim; ++c)
-            correction[dim * o + c] = 0.;
-          for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
-            for (unsigned int c = 0; c < dim; ++c)
-              correction[dim * f.owners.size() + dim * j + c] = 0.;
-        }
+        fitted[o] = fit(o);
     }
 
     template <int dim>
-    Tensor<1, dim>
-    PDLSMEnergy<dim>::gradient_weight(const std::size_t o,
-                                      const std::size_t slot) const
+    typename PDLSMEnergy<dim>::FamilyWeights
+    PDLSMEnergy<dim>::family_weights(const std::size_t o) const
     {
-      // slot 0: the owner; slot 1 + j - offsets[o]: bond j.
+      // The family's nodes (owner, intact members), their gradient
+      // weights, the bonds and the stabilisation weights beta_i = w_i /
+      // (|xi_i|^2 sum w) (normalised Gaussian weights, kept by fit()).
       const PD::Families &f = *this->region.families;
-      Tensor<1, dim>      g =
-        slot == 0 ? owner_weight[o] : weight[f.offsets[o] + slot - 1];
-      if (correct)
-        {
-          const std::size_t base =
-            slot == 0 ? dim * o :
-                        dim * f.owners.size() + dim * (f.offsets[o] + slot - 1);
-          for (unsigned int c = 0; c < dim; ++c)
-            g[c] += correction[base + c];
-        }
-      return g;
-    }
-
-    template <int dim>
-    void
-    PDLSMEnergy<dim>::family_weights(const std::size_t            o,
-                                     std::vector<unsigned int>   &nodes,
-                                     std::vector<Tensor<1, dim>> &g,
-                                     std::vector<Tensor<1, dim>> &bond_vector,
-                                     std::vector<double>         &beta) const
-    {
-      // The family's nodes (owner, intact members), their corrected
-      // gradient weights, the bonds and the stabilisation weights
-      // beta_i = w_i / (sum w |xi_i|^2) (normalised Gaussian weights).
-      const PD::Families &f      = *this->region.families;
-      const auto         &x      = *this->region.position;
-      const unsigned int  k      = f.owners[o];
-      const double        delta  = (*this->region.horizon)[k];
-      const double        inv_a2 = 1. / (weight_factor * weight_factor);
+      const auto         &x = *this->region.position;
+      const unsigned int  k = f.owners[o];
+      FamilyWeights       family;
+      auto &[nodes, g, bond_vector, beta] = family;
       nodes.assign(1, k);
-      g.assign(1, fitted[o] ? gradient_weight(o, 0) : Tensor<1, dim>());
-      bond_vector.clear();
-      beta.clear();
+      g.assign(1, owner_weight[o]);
       double sum = 0.;
       for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
         if (f.intact[j])
@@ -263,16 +209,14 @@ namespace pdfem
             const unsigned int   m  = f.members[j];
             const Tensor<1, dim> bv = x[m] - x[k];
             nodes.push_back(m);
-            g.push_back(fitted[o] ? gradient_weight(o, 1 + j - f.offsets[o]) :
-                                    Tensor<1, dim>());
+            g.push_back(weight[j]);
             bond_vector.push_back(bv);
-            const double w = std::exp(-(bv * bv) / (delta * delta) * inv_a2) *
-                             (*this->region.volume)[m];
-            beta.push_back(w / (bv * bv));
-            sum += w;
+            beta.push_back(bond_weight[j] / (bv * bv));
+            sum += bond_weight[j];
           }
       for (double &bt : beta)
         bt /= sum;
+      return family;
     }
 
     namespace
@@ -300,11 +244,8 @@ namespace pdfem
       // f_a = V_k sigma_k g_a (strain energy) + G_s V_k sum_i beta_i C_ia
       // z_i (stabilisation), z_i = u_mi - u_k - H xi_i, H = sum_a u_a (x)
       // g_a, C_ia = [a = m_i] - [a = k] - g_a . xi_i.
-      std::vector<unsigned int>   nodes;
-      std::vector<Tensor<1, dim>> g, bond_vector;
-      std::vector<double>         beta;
-      family_weights(o, nodes, g, bond_vector, beta);
-      const std::size_t    n     = nodes.size();
+      const auto [nodes, g, bond_vector, beta] = family_weights(o);
+      const std::size_t    n                   = nodes.size();
       const double         V     = (*this->region.pd_volume)[nodes[0]];
       const Tensor<2, dim> H     = family_gradient(nodes, g, u);
       const Tensor<2, dim> sigma = pdlsm->stress(H);
@@ -340,11 +281,8 @@ namespace pdfem
       // with C^T beta C = S_E - p_a . g_b - p_b . g_a + g_a . M g_b,
       // S_E the bond graph's part, p_a = sum_i beta_i E_ia xi_i and M =
       // sum_i beta_i xi_i (x) xi_i: O(n^2) instead of O(n^3).
-      std::vector<unsigned int>   nodes;
-      std::vector<Tensor<1, dim>> g, bond_vector;
-      std::vector<double>         beta;
-      family_weights(o, nodes, g, bond_vector, beta);
-      const std::size_t n      = nodes.size();
+      const auto [nodes, g, bond_vector, beta] = family_weights(o);
+      const std::size_t n                      = nodes.size();
       const double      V      = (*this->region.pd_volume)[nodes[0]];
       const double      lambda = this->region.lambda, mu = this->region.mu;
       K.assign(n * n, Tensor<2, dim>());
@@ -391,10 +329,7 @@ namespace pdfem
     PDLSMEnergy<dim>::displacement_gradient(const std::size_t      o,
                                             const NodalField<dim> &u) const
     {
-      std::vector<unsigned int>   nodes;
-      std::vector<Tensor<1, dim>> g, bond_vector;
-      std::vector<double>         beta;
-      family_weights(o, nodes, g, bond_vector, beta);
+      const auto [nodes, g, bond_vector, beta] = family_weights(o);
       return family_gradient(nodes, g, u);
     }
 

@@ -73,7 +73,6 @@ namespace pdfem
       const auto         &volume = *this->region.volume;
       const auto         &s      = *this->region.boundary_area;
       const unsigned int  n      = x.size();
-      const double        inv_a2 = 1. / (weight_factor * weight_factor);
 
       // The projectors of the fitted families this rank owns.
       std::vector<FamilyProjector<dim>> P;
@@ -95,7 +94,7 @@ namespace pdfem
                 const unsigned int   m = f.members[j];
                 const Tensor<1, dim> r = (x[m] - x[k]) / delta;
                 p.nodes.push_back(m);
-                p.w.push_back(std::exp(-(r * r) * inv_a2) * volume[m]);
+                p.w.push_back(bond_weight[j]);
                 Tensor<1, dim + 1> phi;
                 phi[0] = 1.;
                 for (unsigned int d = 0; d < dim; ++d)
@@ -205,8 +204,7 @@ namespace pdfem
       // Jacobi-preconditioned CG from c = 0; stops at a
       // residual of 1e-13 of |s| (the patch test needs about 1e-12) or
       // when it stagnates.
-      std::vector<double> &c = correction_potential;
-      c.assign(dim * n, 0.);
+      std::vector<double> c(dim * n, 0.);
       std::vector<double> r(dim * n), z(dim * n), p(dim * n), q(dim * n);
       product(c, q);
       for (std::size_t i = 0; i < r.size(); ++i)
@@ -255,38 +253,34 @@ namespace pdfem
         }
       correction_iterations = it;
 
-      // The correction of each owned family's weights, and the constraint
-      // as it now holds: |sum_k V_k g_kj - s_j| relative to |s|.
-      std::fill(correction.begin(), correction.end(), 0.);
+      // The correction added to each owned family's weights, and the
+      // constraint as it now holds: |sum_k V_k g_kj - s_j| relative to |s|.
       std::vector<double> Pc(dim * n, 0.), check(dim * n, 0.);
       for (std::size_t i = 0; i < P.size(); ++i)
         {
-          const std::size_t o = family[i];
+          const std::size_t o  = family[i];
+          const double      Vk = V[f.owners[o]];
           for (unsigned int c_ = 0; c_ < dim; ++c_)
             {
               for (const unsigned int a : P[i].nodes)
                 Pc[c_ * n + a] = 0.;
               P[i].apply(c.data() + c_ * n, Pc.data() + c_ * n, 1.);
             }
-          std::size_t a = 0;
-          for (unsigned int c_ = 0; c_ < dim; ++c_)
-            correction[dim * o + c_] = Pc[c_ * n + f.owners[o]];
-          for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
-            if (f.intact[j])
+          // The projector's nodes are the owner and the intact members in
+          // family order.
+          std::size_t a              = 0;
+          const auto  correct_weight = [&](Tensor<1, dim> &g) {
+            const unsigned int node = P[i].nodes[a++];
+            for (unsigned int c_ = 0; c_ < dim; ++c_)
               {
-                ++a;
-                for (unsigned int c_ = 0; c_ < dim; ++c_)
-                  correction[dim * f.owners.size() + dim * j + c_] =
-                    Pc[c_ * n + P[i].nodes[a]];
+                g[c_] += Pc[c_ * n + node];
+                check[c_ * n + node] += Vk * g[c_];
               }
-          const double Vk = V[f.owners[o]];
-          for (unsigned int c_ = 0; c_ < dim; ++c_)
-            check[c_ * n + f.owners[o]] += Vk * gradient_weight(o, 0)[c_];
+          };
+          correct_weight(owner_weight[o]);
           for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
             if (f.intact[j])
-              for (unsigned int c_ = 0; c_ < dim; ++c_)
-                check[c_ * n + f.members[j]] +=
-                  Vk * gradient_weight(o, 1 + j - f.offsets[o])[c_];
+              correct_weight(weight[j]);
         }
       Utilities::MPI::sum(check, this->region.comm, check);
       double error = 0.;

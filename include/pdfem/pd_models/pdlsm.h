@@ -5,6 +5,9 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <cstddef>
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace dealii
@@ -16,10 +19,33 @@ namespace pdfem
 {
   namespace PDModels
   {
+    template <int dim>
+    struct Region;
+
     /// Declare Peridynamics/Weight factor (a in the Gaussian weight of the
     /// PDLSM fits), shared by the models that use it.
     void
     declare_weight_factor(dealii::ParameterHandler &prm);
+
+    /// Read Peridynamics/Weight factor from @p prm (inside `Peridynamics`);
+    /// InputError naming @p file unless it is positive.
+    double
+    parse_weight_factor(dealii::ParameterHandler &prm, const std::string &file);
+
+    /**
+     * Fit every family of @p region with @p fit(o) (false: the family
+     * cannot carry it). Collective: if any family on any rank cannot, an
+     * InputError naming Peridynamics/Horizon factor counts them, shows the
+     * first one, names the fit (@p fit_name, with the weight factor @p a)
+     * and gives @p advice.
+     */
+    template <int dim>
+    void
+    fit_every_family(const Region<dim>                      &region,
+                     const std::function<bool(std::size_t)> &fit,
+                     const std::string                      &fit_name,
+                     double                                  a,
+                     const std::string                      &advice);
 
     /**
      * Peridynamic least squares minimisation (PDLSM; Madenci, Dorduncu & Gu,

@@ -48,7 +48,7 @@ namespace pdfem
      * tangent symmetric and the forces of every family sum to zero (H is
      * unchanged by a translation), with or without broken bonds. Broken
      * bonds leave the family: its weights are fitted again over the intact
-     * ones and the correction is solved again.
+     * ones, without the correction (doc/theory.md §12.3).
      */
     template <int dim>
     class PDLSMEnergy : public Interface<dim>
@@ -98,39 +98,41 @@ namespace pdfem
       constants() const override;
 
     private:
-      /// Fit the gradient weights of family @p o over its intact bonds;
-      /// false if they cannot carry the fit (weights left zero).
+      /// Fit the gradient weights of family @p o over its intact bonds
+      /// (and set their Gaussian weights); false if they cannot carry the
+      /// fit (gradient weights left zero).
       bool
       fit(std::size_t o);
       /// Solve for the integration-constraint correction of every family,
       /// once at set-up (collective; pdlsm_energy_correction.cc).
       void
       solve_integration_constraint();
-      /// The corrected gradient weight of family @p o's slot (0: owner,
-      /// 1 + j - offsets[o]: bond j).
-      dealii::Tensor<1, dim>
-      gradient_weight(std::size_t o, std::size_t slot) const;
-      /// Family @p o's nodes (owner, intact members), corrected weights,
-      /// bond vectors and stabilisation weights.
-      void
-      family_weights(std::size_t                          o,
-                     std::vector<unsigned int>           &nodes,
-                     std::vector<dealii::Tensor<1, dim>> &g,
-                     std::vector<dealii::Tensor<1, dim>> &bond_vector,
-                     std::vector<double>                 &beta) const;
+      /// What the energy of one family reads: its nodes (owner, intact
+      /// members), their gradient weights, the bonds and the
+      /// stabilisation weights.
+      struct FamilyWeights
+      {
+        std::vector<unsigned int>           nodes;
+        std::vector<dealii::Tensor<1, dim>> g, bond_vector;
+        std::vector<double>                 beta;
+      };
+      /// Family @p o's FamilyWeights.
+      FamilyWeights
+      family_weights(std::size_t o) const;
 
       double                      weight_factor = 0.33;
       bool                        quadratic_fit = false;
       double                      stabilisation = 1.;
       bool                        correct       = true;
       std::unique_ptr<PDLSM<dim>> pdlsm;
-      /// Least-squares weights: per bond (zero when broken) and per owner.
+      /// Gradient weights g (corrected once at set-up, refitted plain
+      /// when a family loses bonds): per bond (zero when broken) and per
+      /// owner.
       std::vector<dealii::Tensor<1, dim>> weight, owner_weight;
-      std::vector<std::uint8_t>           fitted;
-      /// The correction (P_k c) per owner slot (dim each), then per bond.
-      std::vector<double> correction;
-      /// The correction's global unknown c (dim per node).
-      std::vector<double> correction_potential;
+      /// Per bond the Gaussian weight omega V of the fits, the projector
+      /// and the stabilisation (zero when broken).
+      std::vector<double>       bond_weight;
+      std::vector<std::uint8_t> fitted;
       /// |sum_k V_k g_kj - s_j| / |s| after the solve, and its CG
       /// iterations.
       double       constraint_residual   = 0.;
