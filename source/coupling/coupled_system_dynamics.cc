@@ -269,7 +269,7 @@ namespace pdfem
         }
 
       const auto &ls = s.settings.linear_solver;
-      if (ls.type == "direct")
+      if (!ls.iterative())
         {
           d.direct = std::make_unique<TrilinosWrappers::SolverDirect>(
             d.direct_control,
@@ -288,10 +288,11 @@ namespace pdfem
       else
         {
           // K_N is mass dominated: a symmetric-like, well-conditioned
-          // operator; ML AMG with the translation modes.
+          // operator; ML AMG with the translation modes, symmetric smoothed
+          // aggregation for CG (K_N is then symmetric positive definite).
           auto amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
           TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
-          amg_data.elliptic = false;
+          amg_data.elliptic = ls.conjugate_gradients();
           amg->initialize(A, amg_data);
           d.precondition = std::move(amg);
         }
@@ -313,20 +314,30 @@ namespace pdfem
                              "the solve with M + beta dt^2 K is not finite");
           return 1;
         }
-      const auto                   &ls = s.settings.linear_solver;
-      SolverControl                 control(ls.max_iterations,
+      const auto   &ls = s.settings.linear_solver;
+      SolverControl control(ls.max_iterations,
                             std::max(1e-300, ls.tolerance * b.l2_norm()));
-      TrilinosWrappers::SolverGMRES gmres(
-        control,
-        TrilinosWrappers::SolverGMRES::AdditionalData(false, ls.restart));
+      const char   *name = ls.conjugate_gradients() ? "CG" : "GMRES";
       try
         {
-          gmres.solve(*d.effective, x, b, *d.precondition);
+          if (ls.conjugate_gradients())
+            {
+              TrilinosWrappers::SolverCG cg(control);
+              cg.solve(*d.effective, x, b, *d.precondition);
+            }
+          else
+            {
+              TrilinosWrappers::SolverGMRES gmres(
+                control,
+                TrilinosWrappers::SolverGMRES::AdditionalData(false,
+                                                              ls.restart));
+              gmres.solve(*d.effective, x, b, *d.precondition);
+            }
         }
       catch (const std::exception &e)
         {
           throw RunFailure("linear solver diverged",
-                           "GMRES on M + beta dt^2 K: " +
+                           std::string(name) + " on M + beta dt^2 K: " +
                              std::string(e.what()).substr(0, 200));
         }
       return control.last_step();

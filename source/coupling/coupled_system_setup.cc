@@ -176,8 +176,23 @@ namespace pdfem
     void
     CoupledSystem<dim>::Impl::make_sparsity()
     {
-      matrix_free = settings.linear_solver.type == "gmres" &&
-                    settings.linear_solver.preconditioner == "amg fe";
+      matrix_free = settings.linear_solver.matrix_free();
+      // CG needs a symmetric operator: FE cells are, a PD model says.
+      const bool any_pd =
+        Utilities::MPI::max(static_cast<unsigned int>(
+                              std::any_of(is_pd.begin(),
+                                          is_pd.end(),
+                                          [](auto p) { return p != 0; })),
+                            comm) > 0;
+      if (settings.linear_solver.conjugate_gradients() && any_pd &&
+          !model->symmetric())
+        throw InputError(settings.source_file,
+                         "Linear solver/Type",
+                         "cg needs a symmetric operator, and the stiffness "
+                         "of this Peridynamics/Model is not (the collocated "
+                         "pdlsm's)",
+                         "direct or gmres (or Peridynamics/Model = pdlsm "
+                         "energy, which is symmetric)");
       if (matrix_free && !model->linear())
         throw InputError(settings.source_file,
                          "Linear solver/Preconditioner",

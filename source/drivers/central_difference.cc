@@ -101,6 +101,8 @@ namespace pdfem
       acceleration();
       EnergyAccount energy;
       energy.start(U, F_int, F_ext, held, kinetic(), comm);
+      LeapfrogEnergy conserved;
+      conserved.start(U, comm);
       DynamicRecord record;
       record.time_step = dt;
       energy.record(record);
@@ -150,6 +152,10 @@ namespace pdfem
                 v[i] += 0.5 * h * a[i];
           }
           energy.step(U, F_int, F_ext, held, kinetic());
+          // The shortened last step is outside the leapfrog identity.
+          const bool uniform = h == dt;
+          if (uniform)
+            conserved.step(U, half, M, F_int, F_ext, held);
           time_spent.update += seconds_since(start);
 
           record           = DynamicRecord();
@@ -173,6 +179,8 @@ namespace pdfem
                   held = held_flags(system, U);
                   system.internal_force(U, F_int);
                   energy.bonds_broke(U, F_int);
+                  if (uniform)
+                    conserved.bonds_broke(F_int, F_ext, held);
                   acceleration();
                   a = A.begin();
                   for (std::size_t i = 0; i < n; ++i)
@@ -184,6 +192,7 @@ namespace pdfem
               time_spent.callback += seconds_since(start);
             }
           energy.record(record);
+          record.energy_drift = conserved.drift();
           ++time_spent.n_steps;
           if (energy.unstable(settings.energy_tolerance))
             {

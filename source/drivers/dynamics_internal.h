@@ -78,7 +78,8 @@ namespace pdfem
         /// energy grew in each of the last three steps: an instability, not
         /// the start-up mismatch of a load that has supplied almost nothing
         /// yet (at step 1 of a ramp the work is 0 but v^1 = dt/2 a^1 is
-        /// not, and the error then shrinks).
+        /// not, and the error then shrinks). Or, from step 4 on, whether
+        /// the energy present exceeds 1e3 times the most ever supplied.
         bool
         unstable(double tolerance) const;
 
@@ -99,6 +100,68 @@ namespace pdfem
                       const Vector            &f_ext,
                       const std::vector<char> &held,
                       Vector                  &force) const;
+      };
+
+      /**
+       * The central difference's own conserved energy (the "shadow"
+       * energy of the leapfrog scheme):
+       *
+       *   G^n = 1/2 v^(n+1/2) . M v^(n+1/2) + 1/2 u^n . f_int(u^(n+1)).
+       *
+       * For f_int = K u with K symmetric, the update M (v^(n+1/2) -
+       * v^(n-1/2)) = dt (f_ext^n - K u^n) on the free DoFs gives exactly
+       *
+       *   G^n - G^(n-1) = F^n . (u^(n+1) - u^(n-1)) / 2,
+       *
+       * F = f_ext on free DoFs and f_int on held ones (the supports' work),
+       * so that drift() = (G^n + dissipated - G^0 - work) / scale stays at
+       * round-off however many steps run, while the energy of
+       * EnergyAccount (kinetic energy at whole steps) oscillates by
+       * O(dt^2). A non-symmetric K (the collocated pdlsm) makes it grow.
+       * Bonds that break at u^(n+1) book 1/2 u^n . (f_int - f_int') as
+       * dissipated. The scale is the largest |G^0 + work| or |G^n +
+       * dissipated| so far.
+       */
+      class LeapfrogEnergy
+      {
+      public:
+        /// The state at t = 0: u^0.
+        void
+        start(const Vector &u, MPI_Comm comm);
+
+        /**
+         * After step s of length dt: @p u = u^s, @p half = v^(s-1/2) (owned
+         * entries), @p mass the lumped mass, f_int(u^s) and f_ext(t^s).
+         * A step of another length (the shortened last one) leaves the
+         * account as it is.
+         */
+        void
+        step(const Vector              &u,
+             const std::vector<double> &half,
+             const Vector              &mass,
+             const Vector              &f_int,
+             const Vector              &f_ext,
+             const std::vector<char>   &held);
+
+        /// Bonds broke at the u^s of the last step(): f_int(u^s) is now
+        /// @p f_int, and the held DoFs @p held.
+        void
+        bonds_broke(const Vector            &f_int,
+                    const Vector            &f_ext,
+                    const std::vector<char> &held);
+
+        /// Relative drift of the conserved energy (0 before step 2).
+        double
+        drift() const;
+
+      private:
+        MPI_Comm     comm    = MPI_COMM_SELF;
+        unsigned int n_steps = 0;
+        // u^(s-1), u^s and F^s after step s.
+        Vector u_before, u_last, force_last;
+        double g0 = 0., g = 0., work = 0., dissipated = 0., scale = 0.;
+        /// 1/2 u^(s-1) . f_int(u^s) of the last step.
+        double strain_part = 0.;
       };
 
       /**

@@ -216,9 +216,12 @@ namespace pdfem
       prm.enter_subsection("Peridynamics");
       const auto &models = PDModels::registry<2>();
       prm.declare_entry("Model",
-                        "pdlsm",
-                        Selection(models.selection()),
-                        "PD model of the PD cells (pdfem --list-plugins). " +
+                        "auto",
+                        Selection("auto|" + models.selection()),
+                        "PD model of the PD cells (pdfem --list-plugins). "
+                        "auto: 'pdlsm energy' for the dynamic drivers "
+                        "(explicit, newmark), whose collocated counterpart "
+                        "has growing modes, and 'pdlsm' otherwise. " +
                           models.summary() +
                           "rnp scenes run every cell as PD (subsection "
                           "RNP).");

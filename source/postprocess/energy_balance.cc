@@ -38,15 +38,16 @@ namespace pdfem
                   "strain_energy",
                   "external_work",
                   "dissipated_energy",
-                  "energy_error"};
+                  "energy_error",
+                  "energy_drift"};
         }
 
         void
         every_time_step() override
         {
-          max_abs_error =
-            std::max(max_abs_error,
-                     std::abs(this->get_time_step_record().energy_error));
+          const auto &r = this->get_time_step_record();
+          max_abs_error = std::max(max_abs_error, std::abs(r.energy_error));
+          max_abs_drift = std::max(max_abs_drift, std::abs(r.energy_drift));
         }
 
         void
@@ -61,6 +62,7 @@ namespace pdfem
                                  r.dissipated_energy})
             row.push_back(thickness * e);
           row.push_back(r.energy_error);
+          row.push_back(r.energy_drift);
         }
 
         void
@@ -86,11 +88,14 @@ namespace pdfem
           json.value("dissipated_energy", thickness * r.dissipated_energy);
           json.value("energy_error", r.energy_error);
           json.value("max_abs_energy_error", max_abs_error);
+          json.value("energy_drift", r.energy_drift);
+          json.value("max_abs_energy_drift", max_abs_drift);
           json.end_object();
         }
 
       private:
         double max_abs_error = 0.;
+        double max_abs_drift = 0.;
         double total_mass    = 0.;
       };
     } // namespace
@@ -98,6 +103,8 @@ namespace pdfem
     PDFEM_REGISTER_POSTPROCESSOR(EnergyBalance,
                                  "energy balance",
                                  "dynamic runs: kinetic and strain energy, "
-                                 "external work, dissipation, energy error.")
+                                 "external work, dissipation, energy error "
+                                 "and the integrator's conserved-energy "
+                                 "drift.")
   } // namespace Postprocess
 } // namespace pdfem

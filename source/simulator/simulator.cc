@@ -70,8 +70,7 @@ namespace pdfem
     traits.model_name       = model_name;
     traits.nonlinear_model  = nonlinear;
     traits.has_mass         = density > 0.;
-    traits.assembled_matrix = !(linear_solver.type == "gmres" &&
-                                linear_solver.preconditioner == "amg fe");
+    traits.assembled_matrix = !linear_solver.matrix_free();
     traits.driver_name      = driver_name;
     return traits;
   }
@@ -102,6 +101,12 @@ namespace pdfem
                        "0 with Driver/Type = " + traits.driver_name);
   }
 
+  std::string
+  default_model_name(const bool dynamic_driver)
+  {
+    return dynamic_driver ? "pdlsm energy" : "pdlsm";
+  }
+
   template <int dim>
   RunPlugins<dim>
   make_plugins(const std::string        &file,
@@ -113,16 +118,19 @@ namespace pdfem
                const Solvers::Settings  &linear_solver)
   {
     RunPlugins<dim> plugins;
+    plugins.driver = Drivers::create(driver_settings.type, file);
+    plugins.driver->initialize(driver_settings, file, dim);
+    plugins.model_name = model_name == "auto" ?
+                           default_model_name(plugins.driver->dynamic()) :
+                           model_name;
     if (parameters != nullptr)
       {
-        plugins.model = PDModels::create<dim>(model_name, file);
+        plugins.model = PDModels::create<dim>(plugins.model_name, file);
         parameters->enter_subsection("Peridynamics");
         plugins.model->parse_parameters(*parameters, file);
         parameters->leave_subsection();
       }
     const bool nonlinear_model = plugins.model && !plugins.model->linear();
-    plugins.driver             = Drivers::create(driver_settings.type, file);
-    plugins.driver->initialize(driver_settings, file, dim);
     plugins.criterion =
       Fracture::create_criterion<dim>(fracture.criterion, file);
     if (plugins.criterion)
@@ -131,7 +139,7 @@ namespace pdfem
                        plugins.criterion.get(),
                        make_run_traits(file,
                                        dim,
-                                       model_name,
+                                       plugins.model_name,
                                        nonlinear_model,
                                        density,
                                        linear_solver,
@@ -518,8 +526,9 @@ namespace pdfem
                                   s.setup.settings.linear_solver);
     if (plugins.model)
       s.setup.settings.pd_model = plugins.model;
-    s.driver    = std::move(plugins.driver);
-    s.criterion = std::move(plugins.criterion);
+    s.model_name = plugins.model_name;
+    s.driver     = std::move(plugins.driver);
+    s.criterion  = std::move(plugins.criterion);
     // The driver's validated parameters (time step, monitor points parsed)
     // are the run's.
     s.setup.driver = s.driver->settings();

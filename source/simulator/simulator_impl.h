@@ -149,16 +149,18 @@ namespace pdfem
     void
     print_end() const;
 
-    const Simulator<dim>                         &owner;
-    RunSetup<dim>                                 setup;
-    MPI_Comm                                      comm;
-    bool                                          root;
-    std::ostream                                 *progress = nullptr;
-    std::unique_ptr<Drivers::Interface>           driver;
-    std::unique_ptr<Fracture::Criterion<dim>>     criterion;
-    std::unique_ptr<Coupling::CoupledSystem<dim>> coupled;
-    std::unique_ptr<Fracture::CrackGrowth<dim>>   cracks;
-    std::vector<Mesh::Crack<dim>>                 initial_cracks;
+    const Simulator<dim>               &owner;
+    RunSetup<dim>                       setup;
+    MPI_Comm                            comm;
+    bool                                root;
+    std::ostream                       *progress = nullptr;
+    std::unique_ptr<Drivers::Interface> driver;
+    /// The PD model's registry name (Peridynamics/Model, `auto` resolved).
+    std::string                                               model_name;
+    std::unique_ptr<Fracture::Criterion<dim>>                 criterion;
+    std::unique_ptr<Coupling::CoupledSystem<dim>>             coupled;
+    std::unique_ptr<Fracture::CrackGrowth<dim>>               cracks;
+    std::vector<Mesh::Crack<dim>>                             initial_cracks;
     std::vector<std::unique_ptr<Postprocess::Interface<dim>>> postprocessors;
     std::unique_ptr<IO::History>                              history;
     dealii::TrilinosWrappers::MPI::Vector                     u;

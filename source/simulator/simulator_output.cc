@@ -37,12 +37,13 @@ namespace pdfem
               << " interface), " << size.n_dofs << " DoFs, " << size.n_bonds
               << " bonds, " << Utilities::MPI::n_mpi_processes(comm)
               << " rank(s), driver " << setup.driver.type << std::endl;
-    const auto constants = coupled->pd_model().constants();
-    if (!constants.empty())
+    if (size.n_pd_cells > 0)
       {
-        *progress << "  PD model:";
-        for (const auto &[name, value] : constants)
-          *progress << " " << name << " = " << value;
+        *progress << "  PD model " << model_name;
+        const auto constants = coupled->pd_model().constants();
+        for (std::size_t i = 0; i < constants.size(); ++i)
+          *progress << (i == 0 ? ": " : ", ") << constants[i].first << " = "
+                    << constants[i].second;
         *progress << std::endl;
       }
   }
@@ -162,11 +163,11 @@ namespace pdfem
     for (const auto &p : postprocessors)
       p->write_final(json);
     json.end_object();
-    const auto constants = coupled->pd_model().constants();
-    if (!constants.empty())
+    if (initial_size.n_pd_cells > 0)
       {
         json.begin_object("pd_model");
-        for (const auto &[name, value] : constants)
+        json.value("name", model_name);
+        for (const auto &[name, value] : coupled->pd_model().constants())
           json.value(name, value);
         json.end_object();
       }

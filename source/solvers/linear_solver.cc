@@ -4,6 +4,7 @@
 #include <pdfem/solvers/linear_solver.h>
 #include <pdfem/solvers/ml_threaded_products.h>
 
+#include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
@@ -53,15 +54,16 @@ namespace pdfem
       void
       initialize_amg(TrilinosWrappers::PreconditionAMG    &amg,
                      const TrilinosWrappers::SparseMatrix &matrix,
-                     const std::vector<std::vector<bool>> &constant_modes)
+                     const std::vector<std::vector<bool>> &constant_modes,
+                     const bool                            symmetric)
       {
         Teuchos::ParameterList              list;
         std::unique_ptr<Epetra_MultiVector> distributed_modes;
         amg_data(true, constant_modes)
           .set_parameters(list, distributed_modes, matrix);
         // One constant mode per displacement component: their number is
-        // the dimension.
-        if (constant_modes.size() == 2)
+        // the dimension. CG needs the symmetric V-cycle.
+        if (constant_modes.size() == 2 && !symmetric)
           list.set("smoother: pre or post", std::string("post"));
         amg.initialize(matrix, list);
         thread_ml_products(amg, ThreadTeam::shared());
@@ -88,7 +90,7 @@ namespace pdfem
                         const double                          allowed_residual)
     {
       unsigned int iterations = 1;
-      if (settings.type == "direct")
+      if (!settings.iterative())
         {
           SolverControl                                  control(1, 0);
           TrilinosWrappers::SolverDirect::AdditionalData data(
@@ -106,6 +108,8 @@ namespace pdfem
                                  std::string(e.what()).substr(0, 200));
             }
         }
+      else if (settings.conjugate_gradients())
+        iterations = solve_cg(K, x, b, allowed_residual);
       else
         {
           const double                  b_norm = b.l2_norm();
@@ -166,11 +170,73 @@ namespace pdfem
           iterations = control.last_step();
         }
       if (!std::isfinite(x.l2_norm()))
-        throw RunFailure(settings.type == "direct" ? "singular matrix" :
-                                                     "linear solver diverged",
+        throw RunFailure(!settings.iterative() ? "singular matrix" :
+                                                 "linear solver diverged",
                          "the solution of the linear system is not finite");
       return iterations;
     }
+    unsigned int
+    LinearSolver::solve_cg(const TrilinosWrappers::SparseMatrix &K,
+                           TrilinosWrappers::MPI::Vector        &x,
+                           const TrilinosWrappers::MPI::Vector  &b,
+                           const double allowed_residual)
+    {
+      // CG of the symmetric coupled matrix: ML AMG (symmetric smoothed
+      // aggregation, kept while the matrix is the same object) or ILU(1),
+      // which is an incomplete Cholesky factorisation of a symmetric matrix.
+      SolverControl                           control(settings.max_iterations,
+                            std::max(settings.tolerance * b.l2_norm(),
+                                     allowed_residual),
+                            false,
+                            false);
+      SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+      x = 0.;
+      try
+        {
+          if (settings.preconditioner == "ilu")
+            {
+              TrilinosWrappers::PreconditionILU ilu;
+              ilu.initialize(K,
+                             TrilinosWrappers::PreconditionILU::AdditionalData(
+                               1, 0., 1., 1));
+              cg.solve(K, x, b, ilu);
+            }
+          else
+            {
+              // Kept as the GMRES path keeps it: rebuilt once CG needs
+              // twice the iterations it needed when fresh.
+              const bool rebuild = !amg || amg_matrix != &K || amg_stale;
+              if (rebuild)
+                {
+                  amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+                  amg->initialize(K, amg_data(true, constant_modes));
+                  amg_matrix = &K;
+                  amg_stale  = false;
+                }
+              cg.solve(K, x, b, *amg);
+              if (rebuild)
+                amg_fresh_iterations = std::max(control.last_step(), 5u);
+              else if (control.last_step() > 2 * amg_fresh_iterations)
+                amg_stale = true;
+            }
+        }
+      catch (const SolverControl::NoConvergence &e)
+        {
+          throw RunFailure("linear solver diverged",
+                           "CG did not reach the tolerance " +
+                             number(settings.tolerance) + " in " +
+                             std::to_string(e.last_step) +
+                             " iterations (residual reduced by " +
+                             number(e.last_residual / b.l2_norm()) + ")");
+        }
+      catch (const std::exception &e)
+        {
+          throw RunFailure("linear solver diverged",
+                           "CG: " + std::string(e.what()).substr(0, 200));
+        }
+      return control.last_step();
+    }
+
     namespace
     {
       /// deal.II's solvers need an object with vmult().
@@ -239,7 +305,10 @@ namespace pdfem
       if (rebuild)
         {
           amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-          initialize_amg(*amg, auxiliary, constant_modes);
+          initialize_amg(*amg,
+                         auxiliary,
+                         constant_modes,
+                         settings.conjugate_gradients());
           amg_matrix = &auxiliary;
           amg_stale  = false;
         }
@@ -257,7 +326,14 @@ namespace pdfem
       x = 0.;
       try
         {
-          if (block_jacobi)
+          if (settings.conjugate_gradients())
+            {
+              // The block-Jacobi correction after the AMG is not symmetric:
+              // CG takes the symmetric V-cycle alone.
+              SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+              cg.solve(OperatorWrapper{K}, x, b, *amg);
+            }
+          else if (block_jacobi)
             gmres.solve(OperatorWrapper{K},
                         x,
                         b,
@@ -267,12 +343,13 @@ namespace pdfem
         }
       catch (const SolverControl::NoConvergence &e)
         {
-          throw RunFailure("linear solver diverged",
-                           "GMRES did not reach the tolerance " +
-                             number(settings.tolerance) + " in " +
-                             std::to_string(e.last_step) +
-                             " iterations (residual reduced by " +
-                             number(e.last_residual / b_norm) + ")");
+          throw RunFailure(
+            "linear solver diverged",
+            std::string(settings.conjugate_gradients() ? "CG" : "GMRES") +
+              " did not reach the tolerance " + number(settings.tolerance) +
+              " in " + std::to_string(e.last_step) +
+              " iterations (residual reduced by " +
+              number(e.last_residual / b_norm) + ")");
         }
       if (!std::isfinite(x.l2_norm()))
         throw RunFailure("linear solver diverged",

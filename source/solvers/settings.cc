@@ -24,10 +24,13 @@ namespace pdfem
       prm.enter_subsection("Linear solver");
       prm.declare_entry("Type",
                         "direct",
-                        Selection("direct|gmres"),
-                        "direct (sparse LU) or gmres (preconditioned, "
-                        "restarted GMRES). The coupled matrix is not "
-                        "symmetric, so CG is not offered.");
+                        Selection("direct|gmres|cg"),
+                        "direct (sparse LU), gmres (preconditioned, "
+                        "restarted GMRES) or cg (preconditioned conjugate "
+                        "gradients: a symmetric operator only, i.e. FE "
+                        "alone or a PD model with a symmetric tangent such "
+                        "as 'pdlsm energy' or 'rnp'; the collocated 'pdlsm' "
+                        "is not symmetric).");
       prm.declare_entry("Direct solver",
                         "mumps",
                         Selection("mumps|klu"),
@@ -36,22 +39,26 @@ namespace pdfem
       prm.declare_entry("Preconditioner",
                         "amg fe",
                         Selection("amg fe|amg|ilu"),
-                        "For gmres: 'amg fe' (matrix-free coupled operator; "
+                        "For gmres and cg: 'amg fe' (matrix-free coupled "
+                        "operator; "
                         "Trilinos ML algebraic multigrid built from the local "
                         "Q1/P1 stiffness of every cell, PD cells included, "
                         "followed by one block-Jacobi correction with the "
                         "coupled operator), 'amg' (ML built from the "
                         "assembled coupled matrix, kept while bonds break "
                         "until GMRES needs twice its first iteration count) "
-                        "or 'ilu' (Ifpack ILU(1) of it).");
+                        "or 'ilu' (Ifpack ILU(1) of it). With cg the AMG "
+                        "smooths before and after its coarse correction "
+                        "and 'amg fe' has no block-Jacobi correction, so "
+                        "that the preconditioner is symmetric.");
       prm.declare_entry("Tolerance",
                         "1e-10",
                         Double(0.),
-                        "gmres: relative residual reduction.");
+                        "gmres, cg: relative residual reduction.");
       prm.declare_entry("Max iterations",
                         "2000",
                         Integer(1),
-                        "gmres: iteration limit.");
+                        "gmres, cg: iteration limit.");
       prm.declare_entry("GMRES restart",
                         "150",
                         Integer(5, 2000),

@@ -420,10 +420,12 @@ main(int argc, char **argv)
           if (std::find(skip.begin(), skip.end(), x[0][c]) != skip.end())
             continue;
           // Fractions of a load or of the work (force_imbalance,
-          // energy_error) are judged against 1: a conservative run's
-          // imbalance is round-off, whose own size is no scale.
-          const bool fraction =
-            x[0][c] == "force_imbalance" || x[0][c] == "energy_error";
+          // energy_error, energy_drift) are judged against 1: a
+          // conservative run's imbalance is round-off, whose own size is
+          // no scale.
+          const bool fraction = x[0][c] == "force_imbalance" ||
+                                x[0][c] == "energy_error" ||
+                                x[0][c] == "energy_drift";
           double scale = fraction ? 1. : 0.;
           for (std::size_t d = 0; d < n_cols; ++d)
             if (x[0][d][0] == x[0][c][0])

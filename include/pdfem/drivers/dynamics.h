@@ -32,6 +32,16 @@ namespace pdfem
      * zero to round-off for average-acceleration Newmark, a bounded
      * O(dt^2) oscillation for a stable central difference, and exponential
      * growth when the step is too large.
+     *
+     *   energy_drift = the scheme's own conserved energy, relative: for the
+     *              central difference the leapfrog energy G^n = 1/2
+     *              v^(n+1/2) . M v^(n+1/2) + 1/2 u^n . f_int(u^(n+1)),
+     *              whose balance with the work sum F^n . (u^(n+1) -
+     *              u^(n-1)) / 2 holds exactly for a linear symmetric K (a
+     *              round-off drift over any number of steps; growth with
+     *              a non-symmetric K); for Newmark the energy_error (the
+     *              trapezoidal rule's identity for beta = 1/4, gamma = 1/2;
+     *              HHT-alpha and gamma > 1/2 dissipate).
      */
     struct DynamicRecord
     {
@@ -43,6 +53,7 @@ namespace pdfem
       double       external_work     = 0.;
       double       dissipated_energy = 0.;
       double       energy_error      = 0.;
+      double       energy_drift      = 0.;
       unsigned int linear_iterations = 0;
       unsigned int n_factorizations  = 0;
       bool         bonds_broke       = false;

@@ -71,7 +71,7 @@ namespace pdfem
     /** `subsection Peridynamics`: the PD discretisation of the PD cells. */
     struct Peridynamics
     {
-      std::string model = "pdlsm";
+      std::string model = "auto";
       /// m in delta_i = m * Delta_i, Delta_i = V_i^(1/dim).
       double horizon_factor = 3.;
       /// a in omega = exp(-(|xi| / (a delta))^2).

@@ -117,12 +117,25 @@ namespace pdfem
   struct RunPlugins
   {
     std::shared_ptr<PDModels::Interface<dim>> model;
+    /// The model's registry name, `auto` resolved (default_model_name()).
+    std::string                               model_name = "pdlsm";
     std::unique_ptr<Drivers::Interface>       driver;
     std::unique_ptr<Fracture::Criterion<dim>> criterion;
   };
 
   /**
-   * The PD model @p model_name, the driver and the criterion named in
+   * The PD model that `Peridynamics/Model = auto` stands for: the
+   * energy form `pdlsm energy` for dynamic drivers (the collocated pdlsm's
+   * stiffness is not symmetric, and M^-1 K has growing modes: issue 16,
+   * doc/benchmarks/dynamics.md), the collocated `pdlsm` (PDLSM-FEM's
+   * operator) otherwise.
+   */
+  std::string
+  default_model_name(bool dynamic_driver);
+
+  /**
+   * The PD model @p model_name (`auto`: default_model_name() for the
+   * driver), the driver and the criterion named in
    * @p driver_settings (`type`) and @p fracture (`criterion`), made from
    * the registries, given their parameters and checked together with the
    * rest of the run (make_run_traits(), check_plugins()). The model reads

@@ -26,12 +26,13 @@ namespace pdfem
   namespace Solvers
   {
     /**
-     * Solves K x = b for the coupled, non-symmetric matrix: a direct sparse
-     * LU (Amesos MUMPS or KLU) or restarted GMRES preconditioned with
-     * Trilinos ML algebraic multigrid or ILU. (MueLu is not available in
-     * Debian's deal.II 9.4 build.) A failed or non-finite solve throws
-     * RunFailure with exit state "singular matrix" (direct) or "linear solver
-     * diverged" (iterative).
+     * Solves K x = b for the coupled matrix: a direct sparse LU (Amesos
+     * MUMPS or KLU), restarted GMRES preconditioned with Trilinos ML
+     * algebraic multigrid or ILU, or, when the operator is symmetric
+     * (Type = cg), conjugate gradients with a symmetric AMG or ILU. (MueLu is
+     * not available in Debian's deal.II 9.4 build.) A failed or non-finite
+     * solve throws RunFailure with exit state "singular matrix" (direct) or
+     * "linear solver diverged" (iterative).
      */
     class LinearSolver
     {
@@ -46,9 +47,9 @@ namespace pdfem
       void
       set_constant_modes(const std::vector<std::vector<bool>> &modes);
 
-      /// Solve with the assembled @p K: direct, or GMRES with ML AMG or ILU
-      /// of K. Returns the number of iterations (1 for direct). GMRES stops
-      /// at |b - K x| <= max(tolerance |b|, @p allowed_residual).
+      /// Solve with the assembled @p K: direct, or GMRES or CG with ML AMG
+      /// or ILU of K. Returns the number of iterations (1 for direct). GMRES
+      /// stops at |b - K x| <= max(tolerance |b|, @p allowed_residual).
       unsigned int
       solve(const dealii::TrilinosWrappers::SparseMatrix &K,
             dealii::TrilinosWrappers::MPI::Vector        &x,
@@ -86,6 +87,13 @@ namespace pdfem
       }
 
     private:
+      /// The assembled path with Type = cg.
+      unsigned int
+      solve_cg(const dealii::TrilinosWrappers::SparseMatrix &K,
+               dealii::TrilinosWrappers::MPI::Vector        &x,
+               const dealii::TrilinosWrappers::MPI::Vector  &b,
+               double                                        allowed_residual);
+
       Solvers::Settings                                          settings;
       std::vector<std::vector<bool>>                             constant_modes;
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
