@@ -15,20 +15,8 @@
 # against the step, h = 0.1 quads, both operators).
 #
 # usage: applications/benchmarks/dynamics/long_run.sh [BUILD_DIR] [OUT_DIR]
-set -euo pipefail
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-root=$(cd "$here/../../.." && pwd)
-build=$(cd "${1:-$root/build}" && pwd)
-out=${2:-$root/doc/benchmarks}
-pdfem="$build/bin/pdfem"
-get="$build/tests/pdfem_check"
-[ -x "$get" ] || get="$(find "$build" -name pdfem_check -type f | head -n 1)"
-plot="$build/bin/pdfem-plot"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-mkdir -p "$out"
+source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" "${1:-}" "${2:-}"
 scene="$root/tests/scenes/dynamics_energy_form_crack.prm"
-v() { "$get" get "$1/summary.json" "$2"; }
 steps=${STEPS:-100000}
 
 csv="$out/dynamics_long_run.csv"

@@ -13,21 +13,8 @@
 # pdfem-plot is built, PNG charts beside them. Tests never time anything; this script does.
 #
 # usage: applications/benchmarks/dynamics/run.sh [BUILD_DIR] [OUT_DIR]
-set -euo pipefail
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-root=$(cd "$here/../../.." && pwd)
-build=$(cd "${1:-$root/build}" && pwd)
-out=${2:-$root/doc/benchmarks}
-pdfem="$build/bin/pdfem"
-get="$build/tests/pdfem_check"
-[ -x "$get" ] || get="$(find "$build" -name pdfem_check -type f | head -n 1)"
-plot="$build/bin/pdfem-plot"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-mkdir -p "$out"
-peer="$root/../shared/peer-inputs/pdlsm-fem/plateCrack"
+source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" "${1:-}" "${2:-}"
 bar="$root/tests/scenes/dynamics_wave_bar_1d.prm"
-v() { "$get" get "$1/summary.json" "$2"; }
 
 # ---- memory bandwidth (STREAM-like triad, one core): the limit for the bond loop
 cat > "$work/triad.c" << 'EOF'

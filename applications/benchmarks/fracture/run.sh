@@ -16,19 +16,7 @@
 # Writes CSV and PNG files into doc/benchmarks/ (PNG only when pdfem-plot is built).
 #
 # usage: [SECTIONS=1234] applications/benchmarks/fracture/run.sh [BUILD_DIR] [OUT_DIR]
-set -euo pipefail
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-root=$(cd "$here/../../.." && pwd)
-build=$(cd "${1:-$root/build}" && pwd)
-out=${2:-$root/doc/benchmarks}
-pdfem="$build/bin/pdfem"
-get="$(find "$build" -name pdfem_check -type f | head -n 1)"
-plot="$build/bin/pdfem-plot"
-peer="$root/../shared/peer-inputs/pdlsm-fem/plateCrack"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-mkdir -p "$out"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" "${1:-}" "${2:-}"
 sections=${SECTIONS:-1234} # e.g. SECTIONS=3 runs only the peer inputs
 
 # ---- 1. inclined crack

@@ -7,15 +7,7 @@
 # Writes doc/benchmarks/rnp_plate_tension.csv and, with pdfem-plot, rnp_plate_tension.png.
 #
 # usage: applications/benchmarks/rnp/plate_tension.sh [BUILD_DIR] [OUT_DIR]
-set -euo pipefail
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-root=$(cd "$here/../../.." && pwd)
-build=$(cd "${1:-$root/build}" && pwd)
-out=${2:-$root/doc/benchmarks}
-pdfem="$build/bin/pdfem"
-get="$(find "$build" -name pdfem_check -type f | head -n 1)"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" "${1:-}" "${2:-}"
 
 csv="$out/rnp_plate_tension.csv"
 echo "refinements,h,nodes,min_u_x,classical,relative_error,richardson,richardson_error" > "$csv"

@@ -8,18 +8,7 @@
 # wall seconds from summary.json; compute_s = total - mesh (gmsh meshing of the .geo excluded).
 #
 # usage: applications/benchmarks/static/run.sh [BUILD_DIR] [OUT_DIR]
-set -euo pipefail
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-root=$(cd "$here/../../.." && pwd)
-build=$(cd "${1:-$root/build}" && pwd)
-out=${2:-$root/doc/benchmarks}
-pdfem="$build/bin/pdfem"
-get="$build/tests/pdfem_check"
-[ -x "$get" ] || get="$(find "$build" -name pdfem_check -type f | head -n 1)"
-plot="$build/bin/pdfem-plot"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-mkdir -p "$out"
+source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" "${1:-}" "${2:-}"
 
 csv="$out/static.csv"
 echo "case,variant,mesh_size_factor,dofs,bonds,mesh_s,setup_s,assembly_s,solve_s,total_s,compute_s,peak_mb,linear_iterations,result,reference,relative_error" > "$csv"
