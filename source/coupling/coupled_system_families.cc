@@ -140,9 +140,7 @@ namespace pdfem
       Utilities::MPI::sum(cut_by, comm, cut_by);
       // Without PD cells a crack is a slit of the FE mesh, given for the
       // crack-tip integrals: it has no bonds to cut.
-      const bool any_family =
-        Utilities::MPI::sum(families.owners.size(), comm) > 0;
-      for (std::size_t c = 0; c < cracks.size() && any_family; ++c)
+      for (std::size_t c = 0; c < cracks.size() && has_pd_cells(); ++c)
         if (cut_by[c] == 0)
           {
             std::ostringstream crack;

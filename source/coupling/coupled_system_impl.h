@@ -24,6 +24,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <algorithm>
 #include <array>
 #include <functional>
 #include <memory>
@@ -276,7 +277,13 @@ namespace pdfem
       MPI_Comm                                                 comm;
       const dealii::parallel::shared::Triangulation<dim, dim> &tria;
       std::vector<bool>                                        cell_pd;
-      Settings<dim>                                            settings;
+      /// Any PD cell (the shared triangulation: the same on every rank).
+      bool
+      has_pd_cells() const
+      {
+        return std::find(cell_pd.begin(), cell_pd.end(), true) != cell_pd.end();
+      }
+      Settings<dim> settings;
       /// The PD term (settings.pd_model, or pdlsm) and what it reads.
       std::shared_ptr<PDModels::Interface<dim>> model;
       PDModels::Layout                          layout; // model->layout()

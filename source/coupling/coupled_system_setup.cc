@@ -178,13 +178,7 @@ namespace pdfem
     {
       matrix_free = settings.linear_solver.matrix_free();
       // CG needs a symmetric operator: FE cells are, a PD model says.
-      const bool any_pd =
-        Utilities::MPI::max(static_cast<unsigned int>(
-                              std::any_of(is_pd.begin(),
-                                          is_pd.end(),
-                                          [](auto p) { return p != 0; })),
-                            comm) > 0;
-      if (settings.linear_solver.conjugate_gradients() && any_pd &&
+      if (settings.linear_solver.conjugate_gradients() && has_pd_cells() &&
           !model->symmetric())
         throw InputError(settings.source_file,
                          "Linear solver/Type",

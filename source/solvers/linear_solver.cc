@@ -126,28 +126,15 @@ namespace pdfem
             {
               if (settings.preconditioner == "amg")
                 {
-                  // ML of the non-symmetric coupled matrix itself, kept
-                  // while the matrix only loses bonds and rebuilt once
-                  // GMRES needs twice the iterations it needed when fresh.
-                  const bool rebuild = !amg || amg_matrix != &K || amg_stale;
-                  if (rebuild)
-                    {
-                      amg =
-                        std::make_unique<TrilinosWrappers::PreconditionAMG>();
-                      amg->initialize(K, amg_data(false, constant_modes));
-                      amg_matrix = &K;
-                      amg_stale  = false;
-                    }
+                  // ML of the non-symmetric coupled matrix itself.
+                  const bool rebuilt = prepare_matrix_amg(K, false);
                   SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
                     control,
                     SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
                       settings.restart + 2, true));
                   x = 0.;
                   gmres.solve(K, x, b, *amg);
-                  if (rebuild)
-                    amg_fresh_iterations = std::max(control.last_step(), 5u);
-                  else if (control.last_step() > 2 * amg_fresh_iterations)
-                    amg_stale = true;
+                  record_matrix_amg(rebuilt, control.last_step());
                 }
               else
                 {
@@ -175,6 +162,32 @@ namespace pdfem
                          "the solution of the linear system is not finite");
       return iterations;
     }
+    bool
+    LinearSolver::prepare_matrix_amg(const TrilinosWrappers::SparseMatrix &K,
+                                     const bool symmetric)
+    {
+      // Kept while the matrix only loses bonds (the same object), until
+      // record_matrix_amg() found it stale.
+      if (amg && amg_matrix == &K && !amg_stale)
+        return false;
+      amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+      amg->initialize(K, amg_data(symmetric, constant_modes));
+      amg_matrix = &K;
+      amg_stale  = false;
+      return true;
+    }
+
+    void
+    LinearSolver::record_matrix_amg(const bool         rebuilt,
+                                    const unsigned int iterations)
+    {
+      // Rebuilt once a solve needs twice the iterations it needed fresh.
+      if (rebuilt)
+        amg_fresh_iterations = std::max(iterations, 5u);
+      else if (iterations > 2 * amg_fresh_iterations)
+        amg_stale = true;
+    }
+
     unsigned int
     LinearSolver::solve_cg(const TrilinosWrappers::SparseMatrix &K,
                            TrilinosWrappers::MPI::Vector        &x,
@@ -182,7 +195,7 @@ namespace pdfem
                            const double allowed_residual)
     {
       // CG of the symmetric coupled matrix: ML AMG (symmetric smoothed
-      // aggregation, kept while the matrix is the same object) or ILU(1),
+      // aggregation, kept as for GMRES) or ILU(1),
       // which is an incomplete Cholesky factorisation of a symmetric matrix.
       SolverControl                           control(settings.max_iterations,
                             std::max(settings.tolerance * b.l2_norm(),
@@ -203,21 +216,9 @@ namespace pdfem
             }
           else
             {
-              // Kept as the GMRES path keeps it: rebuilt once CG needs
-              // twice the iterations it needed when fresh.
-              const bool rebuild = !amg || amg_matrix != &K || amg_stale;
-              if (rebuild)
-                {
-                  amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-                  amg->initialize(K, amg_data(true, constant_modes));
-                  amg_matrix = &K;
-                  amg_stale  = false;
-                }
+              const bool rebuilt = prepare_matrix_amg(K, true);
               cg.solve(K, x, b, *amg);
-              if (rebuild)
-                amg_fresh_iterations = std::max(control.last_step(), 5u);
-              else if (control.last_step() > 2 * amg_fresh_iterations)
-                amg_stale = true;
+              record_matrix_amg(rebuilt, control.last_step());
             }
         }
       catch (const SolverControl::NoConvergence &e)

@@ -87,6 +87,18 @@ namespace pdfem
       }
 
     private:
+      /// Build the ML hierarchy of the assembled @p K (symmetric smoothed
+      /// aggregation for CG) unless the one kept is still good; returns
+      /// whether it was built.
+      bool
+      prepare_matrix_amg(const dealii::TrilinosWrappers::SparseMatrix &K,
+                         bool symmetric);
+
+      /// After a solve with that hierarchy: mark it stale once a solve
+      /// needs twice the iterations it needed when it was built.
+      void
+      record_matrix_amg(bool rebuilt, unsigned int iterations);
+
       /// The assembled path with Type = cg.
       unsigned int
       solve_cg(const dealii::TrilinosWrappers::SparseMatrix &K,
