@@ -113,6 +113,34 @@ wide() {
 have_plot() { [ -x "$plot" ] && command -v xvfb-run > /dev/null; }
 columns() { head -n 1 "$1" | cut -d, -f2-; } # the series of a wide CSV
 by_x() { awk 'NR == 1 { print; fflush(); next } { print | "sort -t, -k1,1g" }'; } # rows of a wide CSV in the order of x
+time_label="pdfem wall time (summary.json timings.total) [s]"
+# chart WIDE_CSV OUT_PNG [pdfem-plot options]: every series of a wide CSV against x, log x axis.
+chart() {
+  local csv=$1 png=$2; shift 2
+  xvfb-run -a "$plot" chart "$csv" --x x --y "$(columns "$csv")" --logx "$@" --out "$png"
+}
+# pair_chart SOLID.csv DASHED.csv OUT_PNG [options]: two wide CSVs in one chart, log x axis.
+pair_chart() {
+  local a=$1 b=$2 png=$3; shift 3
+  xvfb-run -a "$plot" chart "$a" --x x --y "$(columns "$a")" --csv2 "$b" --y2 "$(columns "$b")" --logx \
+    --label "$(columns "$a"),$(columns "$b")" "$@" --out "$png"
+}
+# error_charts CSV NAME TITLE Y YLABEL SWEEP_SERIES: error Y against time (the energy form at its defaults)
+# -> operator_NAME.png, and against the energy form's stabilisation, one series per fit and mesh named
+# by the awk expression SWEEP_SERIES -> operator_NAME_sweep.png.
+error_charts() {
+  local csv=$1 name=$2 title=$3 y=$4 ylabel=$5 series=$6
+  have_plot || return 0
+  wide "$csv" total_s "$y" 100 'if (f["model"] != "pdlsm energy" || (f["fit"] == "linear" && f["stabilisation"] == 1)) {
+      s = f["model"]; if (s == "pdlsm energy") s = "pdlsm energy (linear; 1)" }' > "$work/$name.csv"
+  chart "$work/$name.csv" "$out/operator_$name.png" --xlabel "$time_label" --ylabel "$ylabel" \
+    --title "$title: error against time"
+  wide "$csv" stabilisation "$y" 100 'if (f["model"] == "pdlsm energy") s = f["fit"] " fit; " '"$series" | by_x \
+    > "$work/${name}_sweep.csv"
+  chart "$work/${name}_sweep.csv" "$out/operator_${name}_sweep.png" \
+    --xlabel "Energy form/Stabilisation [x shear modulus]" --ylabel "$ylabel" \
+    --title "$title: pdlsm energy, fit and stabilisation"
+}
 
 # ---- meshes
 
@@ -168,19 +196,7 @@ strip_case() { # CASE SCENE REFERENCE CSV SLIT_PREFIX
 
 # Error against pdfem's wall time for the default variants, and the sweep of the energy form.
 strip_charts() { # CSV NAME TITLE
-  local csv=$1 name=$2 title=$3
-  have_plot || return 0
-  wide "$csv" total_s K_I_error 100 'if (f["model"] != "pdlsm energy" || (f["fit"] == "linear" && f["stabilisation"] == 1)) {
-      s = f["model"]; if (s == "pdlsm energy") s = "pdlsm energy (linear; 1)" }' \
-    > "$work/$name.csv"
-  xvfb-run -a "$plot" chart "$work/$name.csv" --x x --y "$(columns "$work/$name.csv")" --logx \
-    --xlabel "pdfem wall time (summary.json timings.total) [s]" --ylabel "K_I / handbook - 1 [%]" \
-    --title "$title: error against time" --out "$out/operator_$name.png"
-  wide "$csv" stabilisation K_I_error 100 'if (f["model"] == "pdlsm energy") s = f["fit"] " fit; h = " f["h"]' | by_x \
-    > "$work/${name}_sweep.csv"
-  xvfb-run -a "$plot" chart "$work/${name}_sweep.csv" --x x --y "$(columns "$work/${name}_sweep.csv")" --logx \
-    --xlabel "Energy form/Stabilisation [x shear modulus]" --ylabel "K_I / handbook - 1 [%]" \
-    --title "$title: pdlsm energy, fit and stabilisation" --out "$out/operator_${name}_sweep.png"
+  error_charts "$1" "$2" "$3" K_I_error "K_I / handbook - 1 [%]" '"h = " f["h"]'
 }
 
 if [[ $sections == *a* ]]; then
@@ -263,12 +279,9 @@ if [[ $sections == *c* || $sections == *e* ]]; then
   if have_plot; then
     wide "$csv" total_s K_I_error_of_K0 100 's = f["model"] " K_I"' > "$work/incl_I.csv"
     wide "$csv" total_s K_II_error_of_K0 100 's = f["model"] " K_II"' > "$work/incl_II.csv"
-    xvfb-run -a "$plot" chart "$work/incl_I.csv" --x x --y "$(columns "$work/incl_I.csv")" \
-      --csv2 "$work/incl_II.csv" --y2 "$(columns "$work/incl_II.csv")" --logx \
-      --label "$(columns "$work/incl_I.csv"),$(columns "$work/incl_II.csv")" \
-      --xlabel "pdfem wall time (summary.json timings.total) [s]" --ylabel "(K - exact) / K0 [%]" \
-      --title "Inclined crack, 30 deg: K_I (solid), K_II (dashed)" \
-      --out "$out/operator_inclined.png"
+    pair_chart "$work/incl_I.csv" "$work/incl_II.csv" "$out/operator_inclined.png" \
+      --xlabel "$time_label" --ylabel "(K - exact) / K0 [%]" \
+      --title "Inclined crack, 30 deg: K_I (solid), K_II (dashed)"
   fi
 fi
 
@@ -293,18 +306,7 @@ if [[ $sections == *d* ]]; then
         "$(awk -v k="$S" 'BEGIN { if (k != "") printf "%.6f", (k - 2.198e7) / 2.198e7 }')" "$(common "$dir" direct)" >> "$csv"
     done
   done
-  if have_plot; then
-    wide "$csv" total_s error 100 'if (f["model"] != "pdlsm energy" || (f["fit"] == "linear" && f["stabilisation"] == 1)) {
-        s = f["model"]; if (s == "pdlsm energy") s = "pdlsm energy (linear; 1)" }' > "$work/hole.csv"
-    xvfb-run -a "$plot" chart "$work/hole.csv" --x x --y "$(columns "$work/hole.csv")" --logx \
-      --xlabel "pdfem wall time (summary.json timings.total) [s]" --ylabel "peak sigma_xx / Heywood - 1 [%]" \
-      --title "Plate with a hole: error against time" --out "$out/operator_hole.png"
-    wide "$csv" stabilisation error 100 'if (f["model"] == "pdlsm energy") s = f["fit"] " fit; sizes x " f["h_hole"] / 0.01' | by_x \
-      > "$work/hole_sweep.csv"
-    xvfb-run -a "$plot" chart "$work/hole_sweep.csv" --x x --y "$(columns "$work/hole_sweep.csv")" --logx \
-      --xlabel "Energy form/Stabilisation [x shear modulus]" --ylabel "peak sigma_xx / Heywood - 1 [%]" \
-      --title "Plate with a hole: pdlsm energy, fit and stabilisation" --out "$out/operator_hole_sweep.png"
-  fi
+  error_charts "$csv" hole "Plate with a hole" error "peak sigma_xx / Heywood - 1 [%]" '"sizes x " f["h_hole"] / 0.01'
 fi
 
 # ---- e: quasi-static growth from the inclined crack of (c). Traction 70 MPa x t on top and bottom,
@@ -385,11 +387,9 @@ if [[ $sections == *e* ]]; then
   if have_plot; then
     wide "$csv" total_s initiation_error 100 's = f["model"] " initiation"' > "$work/growth_i.csv"
     wide "$csv" total_s peak_error 100 's = f["model"] " peak"' > "$work/growth_p.csv"
-    xvfb-run -a "$plot" chart "$work/growth_i.csv" --x x --y "$(columns "$work/growth_i.csv")" \
-      --csv2 "$work/growth_p.csv" --y2 "$(columns "$work/growth_p.csv")" --logx \
-      --label "$(columns "$work/growth_i.csv"),$(columns "$work/growth_p.csv")" \
-      --xlabel "pdfem wall time (summary.json timings.total) [s]" --ylabel "load / LEFM initiation load - 1 [%]" \
-      --title "Growth: initiation (solid) and peak (dashed) load" --out "$out/operator_growth.png"
+    pair_chart "$work/growth_i.csv" "$work/growth_p.csv" "$out/operator_growth.png" \
+      --xlabel "$time_label" --ylabel "load / LEFM initiation load - 1 [%]" \
+      --title "Growth: initiation (solid) and peak (dashed) load"
     # Paths on the finest mesh, the LEFM kink over the first 3 mm and the initial crack.
     wide "$paths" x y 1 'if (f["mesh"] == "box n=79") s = f["model"] " (n = 79)"; if (f["mesh"] == "box n=39") s = f["model"] " (n = 39)"' \
       > "$work/paths.csv"
