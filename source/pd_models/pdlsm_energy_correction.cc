@@ -1,14 +1,19 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // "pdlsm energy": the integration-constraint correction of the gradient
-// weights (doc/theory.md §12.2), solved by preconditioned CG over the
-// replicated nodes.
+// weights (doc/theory.md §12.2), solved by CG over the replicated nodes,
+// preconditioned by a sparse factorisation of the regularised operator.
 #include <pdfem/base/config.h>
+#include <pdfem/base/exceptions.h>
 #include <pdfem/pd/families.h>
 #include <pdfem/pd_models/pdlsm_energy.h>
 
 #include <deal.II/base/mpi.h>
 
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <algorithm>
 #include <cmath>
@@ -50,16 +55,126 @@ namespace pdfem
             y[nodes[a]] += scale * w[a] * (v[nodes[a]] - phi[a] * q);
         }
 
-        /// (P)_aa.
+        /// (P)_ab.
         double
-        diagonal(const std::size_t a) const
+        entry(const std::size_t a, const std::size_t b) const
         {
           double q = 0.;
           for (unsigned int i = 0; i < dim + 1; ++i)
             for (unsigned int j = 0; j < dim + 1; ++j)
-              q += phi[a][i] * G_inv(i, j) * phi[a][j];
-          return w[a] - w[a] * w[a] * q;
+              q += phi[a][i] * G_inv(i, j) * phi[b][j];
+          return (a == b ? w[a] : 0.) - w[a] * w[b] * q;
         }
+      };
+
+      /**
+       * The preconditioner of the correction's CG: A + eps diag(A), A =
+       * sum_k V_k P_k assembled over the ranks (rows split evenly) and
+       * factorised once by MUMPS; identity rows for inactive nodes. A is
+       * singular (linear fields over each connected part), the
+       * regularisation eps = 1e-8 makes it definite and leaves the
+       * preconditioned spectrum in [lambda / (lambda + eps d), 1]: CG
+       * needs 4-12 iterations where Jacobi needed hundreds to thousands
+       * and stagnated on fine meshes (residual 1e-3 at 26 000 nodes).
+       */
+      template <int dim>
+      class FactorisedOperator
+      {
+      public:
+        FactorisedOperator(const std::vector<FamilyProjector<dim>> &P,
+                           const std::vector<double>               &volume,
+                           const std::vector<double>               &diag,
+                           const MPI_Comm                          &comm)
+          : owned(Utilities::MPI::create_evenly_distributed_partitioning(
+              comm,
+              diag.size()))
+          , control(1, 0)
+          , solver(
+              control,
+              TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                             "Amesos_Mumps"))
+        {
+          const unsigned int n = diag.size();
+          IndexSet           writable(n);
+          for (const auto &p : P)
+            {
+              std::vector<types::global_dof_index> nodes(p.nodes.begin(),
+                                                         p.nodes.end());
+              std::sort(nodes.begin(), nodes.end());
+              writable.add_indices(nodes.begin(), nodes.end());
+            }
+          writable.add_indices(owned);
+          TrilinosWrappers::SparsityPattern    sp(owned, owned, writable, comm);
+          std::vector<types::global_dof_index> nodes;
+          for (const auto &p : P)
+            {
+              nodes.assign(p.nodes.begin(), p.nodes.end());
+              std::sort(nodes.begin(), nodes.end());
+              for (const auto row : nodes)
+                sp.add_entries(row, nodes.begin(), nodes.end(), true);
+            }
+          for (const auto j : owned)
+            sp.add(j, j);
+          sp.compress();
+          matrix.reinit(sp);
+
+          FullMatrix<double> block;
+          for (std::size_t i = 0; i < P.size(); ++i)
+            {
+              const std::size_t m = P[i].nodes.size();
+              block.reinit(m, m);
+              for (std::size_t a = 0; a < m; ++a)
+                for (std::size_t b = 0; b < m; ++b)
+                  block(a, b) = volume[i] * P[i].entry(a, b);
+              nodes.assign(P[i].nodes.begin(), P[i].nodes.end());
+              matrix.add(nodes, block);
+            }
+          for (const auto j : owned)
+            matrix.add(j, j, diag[j] > 0. ? 1e-8 * diag[j] : 1.);
+          matrix.compress(VectorOperation::add);
+          try
+            {
+              solver.initialize(matrix);
+            }
+          catch (const std::exception &e)
+            {
+              throw RunFailure(
+                "singular matrix",
+                "the integration-constraint correction (Peridynamics/Model = "
+                "pdlsm energy) could not factorise its operator: " +
+                  std::string(e.what()).substr(0, 200));
+            }
+          b.reinit(owned, comm);
+          x.reinit(owned, comm);
+        }
+
+        /// z = (A + eps diag A)^-1 r for each of the @p components columns
+        /// (replicated vectors, length components x n; collective).
+        void
+        apply(const std::vector<double> &r,
+              std::vector<double>       &z,
+              const unsigned int         components,
+              const MPI_Comm            &comm)
+        {
+          const std::size_t n = owned.size();
+          std::fill(z.begin(), z.end(), 0.);
+          for (unsigned int c = 0; c < components; ++c)
+            {
+              for (const auto j : owned)
+                b[j] = r[c * n + j];
+              solver.solve(x, b);
+              for (const auto j : owned)
+                z[c * n + j] = x[j];
+            }
+          Utilities::MPI::sum(z, comm, z);
+        }
+
+      private:
+        const IndexSet                 owned;
+        TrilinosWrappers::SparseMatrix matrix;
+        SolverControl                  control;
+        TrilinosWrappers::SolverDirect solver;
+        TrilinosWrappers::MPI::Vector  b, x;
       };
     } // namespace
 
@@ -119,13 +234,14 @@ namespace pdfem
 
       // A c = r, one column per component: A = sum_k V_k P_k, r_j = s_j -
       // sum_k V_k g_kj (the plain weights), both summed over the ranks.
-      std::vector<double> rhs(dim * n, 0.), diag(n, 0.);
+      std::vector<double> rhs(dim * n, 0.), diag(n, 0.), family_volume;
       for (std::size_t i = 0; i < P.size(); ++i)
         {
           const std::size_t o  = family[i];
           const double      Vk = V[f.owners[o]];
+          family_volume.push_back(Vk);
           for (std::size_t a = 0; a < P[i].nodes.size(); ++a)
-            diag[P[i].nodes[a]] += Vk * P[i].diagonal(a);
+            diag[P[i].nodes[a]] += Vk * P[i].entry(a, a);
           for (unsigned int c = 0; c < dim; ++c)
             rhs[c * n + f.owners[o]] -= Vk * owner_weight[o][c];
           for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
@@ -201,11 +317,15 @@ namespace pdfem
         return sum;
       };
 
-      // Jacobi-preconditioned CG from c = 0; stops at a
-      // residual of 1e-13 of |s| (the patch test needs about 1e-12) or
-      // when it stagnates.
-      std::vector<double> c(dim * n, 0.);
-      std::vector<double> r(dim * n), z(dim * n), p(dim * n), q(dim * n);
+      // Preconditioned CG from c = 0; stops at a residual of 1e-13 of |s|
+      // (the patch test needs about 1e-12) or when 20 iterations bring no
+      // new best (round-off, or a right-hand side not in A's range).
+      FactorisedOperator<dim> preconditioner(P,
+                                             family_volume,
+                                             diag,
+                                             this->region.comm);
+      std::vector<double>     c(dim * n, 0.), c_best = c;
+      std::vector<double>     r(dim * n), z(dim * n), p(dim * n), q(dim * n);
       product(c, q);
       for (std::size_t i = 0; i < r.size(); ++i)
         r[i] = rhs[i] - q[i];
@@ -215,17 +335,19 @@ namespace pdfem
       s_norm                    = std::sqrt(s_norm);
       const double tolerance    = 1e-13 * std::max(s_norm, 1e-300);
       const auto   precondition = [&] {
+        preconditioner.apply(r, z, dim, this->region.comm);
         for (unsigned int c_ = 0; c_ < dim; ++c_)
           for (unsigned int j = 0; j < n; ++j)
-            z[c_ * n + j] = active[j] ? r[c_ * n + j] / diag[j] : 0.;
+            if (!active[j])
+              z[c_ * n + j] = 0.;
       };
       precondition();
       p                             = z;
       double             rz         = dot(r, z);
       double             best       = std::sqrt(dot(r, r));
       unsigned int       since_best = 0, it = 0;
-      const unsigned int max_iterations = 20 * n + 100;
-      for (; it < max_iterations && best > tolerance && since_best < 200; ++it)
+      const unsigned int max_iterations = 500;
+      for (; it < max_iterations && best > tolerance && since_best < 20; ++it)
         {
           product(p, q);
           const double pq = dot(p, q);
@@ -238,9 +360,10 @@ namespace pdfem
               r[i] -= alpha * q[i];
             }
           const double norm = std::sqrt(dot(r, r));
-          if (norm < 0.5 * best)
+          if (norm < best)
             {
               best       = norm;
+              c_best     = c;
               since_best = 0;
             }
           else
@@ -252,6 +375,7 @@ namespace pdfem
           rz = rz_new;
         }
       correction_iterations = it;
+      c.swap(c_best);
 
       // The correction added to each owned family's weights, and the
       // constraint as it now holds: |sum_k V_k g_kj - s_j| relative to |s|.
