@@ -161,7 +161,7 @@ namespace pdfem
       // change (pdlsm energy's integration constraint).
       if (settings.free_crack_faces && !settings.cracks.empty())
         add_crack_face_area(settings.cracks);
-      model->bonds_changed(cut_families, settings.free_crack_faces);
+      model->reference_bonds_cut(cut_families, settings.free_crack_faces);
       update_decoupled();
 
       // Ghosts: every DoF of a family member or of a vertex of an owned

@@ -14,6 +14,10 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/vector.h>
+
 #include <cmath>
 
 namespace pdfem
@@ -45,6 +49,16 @@ namespace pdfem
           "part of each bond, eta - grad u xi, as a multiple of the shear "
           "modulus mu; >= 0 (0 leaves zero-energy modes).");
         prm.declare_entry(
+          "Broken bonds",
+          "condense",
+          Patterns::Selection("condense|refit"),
+          "pdlsm energy: what a family does when bonds break during a run. "
+          "condense: its energy becomes its minimum over the lost members' "
+          "displacements (a Schur complement; breaking can only release "
+          "energy). refit: its gradient weights are fitted again over the "
+          "intact bonds (the energy may rise at a break). Bonds cut by a "
+          "pre-existing crack are always refitted.");
+        prm.declare_entry(
           "Integration correction",
           "true",
           Patterns::Bool(),
@@ -62,9 +76,10 @@ namespace pdfem
     {
       weight_factor = parse_weight_factor(prm, file);
       prm.enter_subsection("Energy form");
-      quadratic_fit = prm.get("Gradient fit") == "quadratic";
-      stabilisation = prm.get_double("Stabilisation");
-      correct       = prm.get_bool("Integration correction");
+      quadratic_fit   = prm.get("Gradient fit") == "quadratic";
+      stabilisation   = prm.get_double("Stabilisation");
+      correct         = prm.get_bool("Integration correction");
+      condense_broken = prm.get("Broken bonds") == "condense";
       prm.leave_subsection();
       if (!(stabilisation >= 0.) || !std::isfinite(stabilisation))
         throw InputError(file,
@@ -155,6 +170,8 @@ namespace pdfem
       bond_weight.assign(f.n_bonds(), 0.);
       owner_weight.assign(f.owners.size(), Tensor<1, dim>());
       fitted.assign(f.owners.size(), 0);
+      condensed.clear();
+      condensed.resize(f.owners.size());
       fit_every_family(
         r,
         [&](const std::size_t o) {
@@ -171,7 +188,26 @@ namespace pdfem
     template <int dim>
     void
     PDLSMEnergy<dim>::bonds_changed(const std::vector<std::size_t> &changed,
-                                    bool /*free_surfaces*/)
+                                    const bool free_surfaces)
+    {
+      // Condensed: the energy loses the lost members' stiffness, and the
+      // weights are refitted as well, for the strain the criteria and the
+      // output read (displacement_gradient()).
+      if (!condense_broken)
+        reference_bonds_cut(changed, free_surfaces);
+      else
+        for (const std::size_t o : changed)
+          {
+            condense(o);
+            fitted[o] = fit(o);
+          }
+    }
+
+    template <int dim>
+    void
+    PDLSMEnergy<dim>::reference_bonds_cut(
+      const std::vector<std::size_t> &changed,
+      bool /*free_surfaces*/)
     {
       // The energy of a family is that of its intact bonds: its weights
       // are fitted again over them, without the correction (either
@@ -203,8 +239,10 @@ namespace pdfem
       nodes.assign(1, k);
       g.assign(1, owner_weight[o]);
       double sum = 0.;
+      // The bonds of the last fit (bond_weight > 0): the intact ones, or,
+      // in condense() before the refit, those before the break.
       for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
-        if (f.intact[j])
+        if (bond_weight[j] > 0.)
           {
             const unsigned int   m  = f.members[j];
             const Tensor<1, dim> bv = x[m] - x[k];
@@ -243,7 +281,23 @@ namespace pdfem
     {
       // f_a = V_k sigma_k g_a (strain energy) + G_s V_k sum_i beta_i C_ia
       // z_i (stabilisation), z_i = u_mi - u_k - H xi_i, H = sum_a u_a (x)
-      // g_a, C_ia = [a = m_i] - [a = k] - g_a . xi_i.
+      // g_a, C_ia = [a = m_i] - [a = k] - g_a . xi_i. Condensed: f = K' u.
+      if (const CondensedFamily *c = condensed[o].get())
+        {
+          const PD::Families &fam  = *this->region.families;
+          const std::size_t   n    = c->bonds.size() + 1;
+          const auto          node = [&](const std::size_t a) {
+            return a == 0 ? fam.owners[o] : fam.members[c->bonds[a - 1]];
+          };
+          f.assign(n, Tensor<1, dim>());
+          for (std::size_t b = 0; b < n; ++b)
+            {
+              const Tensor<1, dim> u_b = u[node(b)];
+              for (std::size_t a = 0; a < n; ++a)
+                f[a] += c->K[a * n + b] * u_b;
+            }
+          return;
+        }
       const auto [nodes, g, bond_vector, beta] = family_weights(o);
       const std::size_t    n                   = nodes.size();
       const double         V     = (*this->region.pd_volume)[nodes[0]];
@@ -276,14 +330,28 @@ namespace pdfem
                                      const NodalField<dim> &,
                                      std::vector<Tensor<2, dim>> &K) const
     {
+      if (const CondensedFamily *c = condensed[o].get())
+        K = c->K;
+      else
+        weights_tangent(
+          family_weights(o),
+          (*this->region.pd_volume)[(*this->region.families).owners[o]],
+          K);
+    }
+
+    template <int dim>
+    void
+    PDLSMEnergy<dim>::weights_tangent(const FamilyWeights         &weights,
+                                      const double                 V,
+                                      std::vector<Tensor<2, dim>> &K) const
+    {
       // Strain energy: K_ab(i, j) = V (lambda g_a,i g_b,j + mu (delta_ij
       // g_a . g_b + g_a,j g_b,i)). Stabilisation: G_s V (C^T beta C)_ab I
       // with C^T beta C = S_E - p_a . g_b - p_b . g_a + g_a . M g_b,
       // S_E the bond graph's part, p_a = sum_i beta_i E_ia xi_i and M =
       // sum_i beta_i xi_i (x) xi_i: O(n^2) instead of O(n^3).
-      const auto [nodes, g, bond_vector, beta] = family_weights(o);
-      const std::size_t n                      = nodes.size();
-      const double      V      = (*this->region.pd_volume)[nodes[0]];
+      const auto &[nodes, g, bond_vector, beta] = weights;
+      const std::size_t n                       = nodes.size();
       const double      lambda = this->region.lambda, mu = this->region.mu;
       K.assign(n * n, Tensor<2, dim>());
       for (std::size_t a = 0; a < n; ++a)
@@ -322,6 +390,79 @@ namespace pdfem
             for (unsigned int i = 0; i < dim; ++i)
               K[a * n + b][i][i] += G * s;
           }
+    }
+
+    template <int dim>
+    void
+    PDLSMEnergy<dim>::condense(const std::size_t o)
+    {
+      // The stiffness before this break: from the weights of the last fit
+      // the first time, else the one condensed before.
+      const PD::Families &f = *this->region.families;
+      if (!condensed[o])
+        {
+          auto c = std::make_unique<CondensedFamily>();
+          for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+            if (bond_weight[j] > 0.)
+              c->bonds.push_back(j);
+          weights_tangent(family_weights(o),
+                          (*this->region.pd_volume)[f.owners[o]],
+                          c->K);
+          condensed[o] = std::move(c);
+        }
+      CondensedFamily         &c = *condensed[o];
+      const std::size_t        n = c.bonds.size() + 1;
+      std::vector<std::size_t> keep{0}, lost;
+      for (std::size_t i = 0; i < c.bonds.size(); ++i)
+        (f.intact[c.bonds[i]] ? keep : lost).push_back(i + 1);
+      if (lost.empty())
+        return;
+
+      // K' = K_rr - K_rb K_bb^+ K_br, K_bb^+ the pseudo-inverse (K_bb is
+      // positive semi-definite; singular without stabilisation).
+      const std::size_t        nr = keep.size(), nl = lost.size();
+      LAPACKFullMatrix<double> K_bb(dim * nl, dim * nl);
+      FullMatrix<double>       K_br(dim * nl, dim * nr), X(dim * nl, dim * nr);
+      for (std::size_t a = 0; a < nl; ++a)
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            for (std::size_t b = 0; b < nl; ++b)
+              for (unsigned int j = 0; j < dim; ++j)
+                K_bb(dim * a + i, dim * b + j) =
+                  c.K[lost[a] * n + lost[b]][i][j];
+            for (std::size_t b = 0; b < nr; ++b)
+              for (unsigned int j = 0; j < dim; ++j)
+                K_br(dim * a + i, dim * b + j) =
+                  c.K[lost[a] * n + keep[b]][i][j];
+          }
+      // X = K_bb^+ K_br column by column (vmult is what applies the
+      // pseudo-inverse of the SVD state).
+      K_bb.compute_inverse_svd(1e-12);
+      Vector<double> column(dim * nl), solved(dim * nl);
+      for (std::size_t b = 0; b < dim * nr; ++b)
+        {
+          for (std::size_t l = 0; l < dim * nl; ++l)
+            column[l] = K_br(l, b);
+          K_bb.vmult(solved, column);
+          for (std::size_t l = 0; l < dim * nl; ++l)
+            X(l, b) = solved[l];
+        }
+      std::vector<Tensor<2, dim>> K(nr * nr);
+      for (std::size_t a = 0; a < nr; ++a)
+        for (std::size_t b = 0; b < nr; ++b)
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              {
+                double s = c.K[keep[a] * n + keep[b]][i][j];
+                for (std::size_t l = 0; l < dim * nl; ++l)
+                  s -= K_br(l, dim * a + i) * X(l, dim * b + j);
+                K[a * nr + b][i][j] = s;
+              }
+      c.K.swap(K);
+      std::vector<std::size_t> bonds;
+      for (std::size_t a = 1; a < nr; ++a)
+        bonds.push_back(c.bonds[keep[a] - 1]);
+      c.bonds.swap(bonds);
     }
 
     template <int dim>

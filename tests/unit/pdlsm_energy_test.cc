@@ -6,6 +6,8 @@
 // - the coupled operator is symmetric and its internal forces sum to zero
 //   for any u, with broken bonds and with a crack (the collocated pdlsm's
 //   do not: the check can fail);
+// - breaking bonds during a run can only release energy (condensed
+//   families; refitted ones do not);
 // - the coupling's patch test is exact on irregular meshes, and is not
 //   without the integration-constraint correction;
 // - no soft modes (serial only: a dense eigen-solve): the smallest nonzero
@@ -231,6 +233,62 @@ namespace
     const auto [asymmetry, imbalance] = asymmetry_and_imbalance(collocated);
     EXPECT_GT(asymmetry, 1e-6);
     EXPECT_GT(imbalance, 1e-6);
+  }
+
+  /// The largest rise of the energy E(u) = u . f_int(u) / 2 at a break,
+  /// relative to E before it, over 8 random u and two successive rounds of
+  /// breaking (the second breaks bonds of families condensed in the first).
+  template <int dim>
+  double
+  largest_energy_rise_at_breaks(const Body<dim> &body)
+  {
+    std::vector<Vector> u;
+    for (unsigned int seed = 10; seed < 18; ++seed)
+      u.push_back(body.random(seed));
+    const auto energies = [&] {
+      std::vector<double> e;
+      for (const Vector &v : u)
+        e.push_back(0.5 * (v * body.force(v)));
+      return e;
+    };
+    std::vector<double> before = energies();
+    double              rise   = -1.;
+    for (const unsigned int every : {7u, 5u})
+      {
+        const unsigned long broken =
+          body.system->break_bonds_if([every](unsigned int k, unsigned int m) {
+            return (k + m) % every == 0;
+          });
+        EXPECT_GT(broken, 0u);
+        const std::vector<double> after = energies();
+        for (std::size_t i = 0; i < u.size(); ++i)
+          rise = std::max(rise, (after[i] - before[i]) / before[i]);
+        before = after;
+      }
+    return rise;
+  }
+
+  TEST(PDLSMEnergy, BreakingBondsCanOnlyReleaseEnergy)
+  {
+    // Broken bonds = condense (the default): the condensed energy is a
+    // minimum of the old one, on a cracked body (its cut families refitted
+    // at set-up) and in 3D. Broken bonds = refit: the energy rises for
+    // some u, so the check can fail.
+    const std::vector<Mesh::Crack<2>> crack{
+      Mesh::Crack<2>{{Point<2>(0.2, 0.51), Point<2>(0.55, 0.51)}}};
+    Body<2> quads(8, false, centre_region<2>, "pdlsm energy", {}, crack);
+    EXPECT_LT(largest_energy_rise_at_breaks(quads), 1e-12);
+    Body<2> triangles(4, true, centre_region<2>, "pdlsm energy", {});
+    EXPECT_LT(largest_energy_rise_at_breaks(triangles), 1e-12);
+    Body<3> hexes(4, false, centre_region<3>, "pdlsm energy", {});
+    EXPECT_LT(largest_energy_rise_at_breaks(hexes), 1e-12);
+    Body<2> refit(8,
+                  false,
+                  centre_region<2>,
+                  "pdlsm energy",
+                  {{"Energy form/Broken bonds", "refit"}},
+                  crack);
+    EXPECT_GT(largest_energy_rise_at_breaks(refit), 1e-6);
   }
 
   /// The patch test on @p n^dim cells with horizon factor @p m (3D: 2, so

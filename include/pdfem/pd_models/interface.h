@@ -190,6 +190,20 @@ namespace pdfem
       bonds_changed(const std::vector<std::size_t> &changed,
                     bool                            free_surfaces) = 0;
 
+      /**
+       * As bonds_changed(), for the bonds a pre-existing crack cuts at
+       * set-up: the cracked body is the reference configuration, not a
+       * state that lost bonds. The default calls bonds_changed(); "pdlsm
+       * energy" refits these families (with Broken bonds = condense, bonds
+       * broken during a run are condensed instead).
+       */
+      virtual void
+      reference_bonds_cut(const std::vector<std::size_t> &changed,
+                          bool                            free_surfaces)
+      {
+        bonds_changed(changed, free_surfaces);
+      }
+
       /// Is F linear in u (a constant tangent, so that F(x) = K x)?
       virtual bool
       linear() const = 0;

@@ -46,9 +46,21 @@ namespace pdfem
      *
      * E is a sum of quadratic forms of u, so the model is linear, the
      * tangent symmetric and the forces of every family sum to zero (H is
-     * unchanged by a translation), with or without broken bonds. Broken
-     * bonds leave the family: its weights are fitted again over the intact
-     * ones, without the correction (doc/theory.md §12.3).
+     * unchanged by a translation), with or without broken bonds.
+     *
+     * Bonds cut by a pre-existing crack leave their families at set-up:
+     * the weights are fitted again over the intact bonds, without the
+     * correction (doc/theory.md §12.3). Bonds broken during a run (Energy
+     * form/Broken bonds): "condense" replaces the family's quadratic
+     * energy E_k(u) = 1/2 u^T K_k u by its minimum over the displacements
+     * of the members it lost, the Schur complement
+     *
+     *   K_k' = K_rr - K_rb K_bb^+ K_br   (r: owner and intact members,
+     *                                     b: the lost members),
+     *
+     * so that E_k'(u) <= E_k(u) for every u: breaking can only release
+     * energy (theory.md §12.6); "refit" fits the weights again as at
+     * set-up (the energy may rise).
      */
     template <int dim>
     class PDLSMEnergy : public Interface<dim>
@@ -67,6 +79,10 @@ namespace pdfem
       void
       bonds_changed(const std::vector<std::size_t> &changed,
                     bool                            free_surfaces) override;
+
+      void
+      reference_bonds_cut(const std::vector<std::size_t> &changed,
+                          bool free_surfaces) override;
 
       bool
       linear() const override
@@ -119,11 +135,29 @@ namespace pdfem
       /// Family @p o's FamilyWeights.
       FamilyWeights
       family_weights(std::size_t o) const;
+      /// The stiffness of the energy of @p weights (blocks[a n + b], n
+      /// nodes), family volume @p V.
+      void
+      weights_tangent(const FamilyWeights                 &weights,
+                      double                               V,
+                      std::vector<dealii::Tensor<2, dim>> &K) const;
+      /// Condense the members family @p o lost out of its stiffness (the
+      /// Schur complement; the first time from its weights).
+      void
+      condense(std::size_t o);
+      /// A family condensed by condense(): its energy's nodes (the owner,
+      /// then its members' bond indices) and stiffness blocks.
+      struct CondensedFamily
+      {
+        std::vector<std::size_t>            bonds;
+        std::vector<dealii::Tensor<2, dim>> K;
+      };
 
-      double                      weight_factor = 0.33;
-      bool                        quadratic_fit = false;
-      double                      stabilisation = 1.;
-      bool                        correct       = true;
+      double                      weight_factor   = 0.33;
+      bool                        quadratic_fit   = false;
+      double                      stabilisation   = 1.;
+      bool                        correct         = true;
+      bool                        condense_broken = true;
       std::unique_ptr<PDLSM<dim>> pdlsm;
       /// Gradient weights g (corrected once at set-up, refitted plain
       /// when a family loses bonds): per bond (zero when broken) and per
@@ -133,6 +167,8 @@ namespace pdfem
       /// and the stabilisation (zero when broken).
       std::vector<double>       bond_weight;
       std::vector<std::uint8_t> fitted;
+      /// Per owner: its condensed energy (null while it has none).
+      std::vector<std::unique_ptr<CondensedFamily>> condensed;
       /// |sum_k V_k g_kj - s_j| / |s| after the solve, and its CG
       /// iterations.
       double       constraint_residual   = 0.;
