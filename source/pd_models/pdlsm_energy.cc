@@ -115,6 +115,7 @@ namespace pdfem
         {
           weight[j]      = Tensor<1, dim>();
           bond_weight[j] = 0.;
+          in_fit[j]      = f.intact[j];
           if (f.intact[j])
             {
               xi.push_back(x[f.members[j]] - x[k]);
@@ -168,6 +169,7 @@ namespace pdfem
       const PD::Families &f = *r.families;
       weight.assign(f.n_bonds(), Tensor<1, dim>());
       bond_weight.assign(f.n_bonds(), 0.);
+      in_fit.assign(f.n_bonds(), 0);
       owner_weight.assign(f.owners.size(), Tensor<1, dim>());
       fitted.assign(f.owners.size(), 0);
       condensed.clear();
@@ -239,10 +241,10 @@ namespace pdfem
       nodes.assign(1, k);
       g.assign(1, owner_weight[o]);
       double sum = 0.;
-      // The bonds of the last fit (bond_weight > 0): the intact ones, or,
-      // in condense() before the refit, those before the break.
+      // The bonds of the last fit: the intact ones, or, in condense()
+      // before the refit, those before the break.
       for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
-        if (bond_weight[j] > 0.)
+        if (in_fit[j])
           {
             const unsigned int   m  = f.members[j];
             const Tensor<1, dim> bv = x[m] - x[k];
@@ -403,7 +405,7 @@ namespace pdfem
         {
           auto c = std::make_unique<CondensedFamily>();
           for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
-            if (bond_weight[j] > 0.)
+            if (in_fit[j])
               c->bonds.push_back(j);
           weights_tangent(family_weights(o),
                           (*this->region.pd_volume)[f.owners[o]],

@@ -6,6 +6,7 @@
 #include <pdfem/base/exceptions.h>
 #include <pdfem/io/pdlsm_fem_input.h>
 #include <pdfem/mesh/cracks.h>
+#include <pdfem/mesh/mesh_checks.h>
 
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria_description.h>
@@ -324,6 +325,7 @@ namespace pdfem
                              "conforming, non-inverted Q4/T3 (2D) or H8/T4 "
                              "(3D) elements");
           }
+        Mesh::check_cell_shapes(tria, model.mesh_file);
         setup.cell_is_pd.assign(tria.n_active_cells(), false);
         for (const auto &cell : tria.active_cell_iterators())
           setup.cell_is_pd[cell->active_cell_index()] =

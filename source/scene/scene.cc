@@ -10,6 +10,7 @@
 #include <pdfem/io/pdlsm_fem_input.h>
 #include <pdfem/mesh/cracks.h>
 #include <pdfem/mesh/gmsh_input.h>
+#include <pdfem/mesh/mesh_checks.h>
 #include <pdfem/scene/scene.h>
 #include <pdfem/simulator/simulator.h>
 
@@ -215,6 +216,16 @@ namespace pdfem
             {
               mesh_error = e.what();
             }
+        // The file's structure before deal.II's reader trusts it.
+        if (mesh_error.empty() && Utilities::MPI::this_mpi_process(comm) == 0)
+          try
+            {
+              Mesh::check_msh_file(msh);
+            }
+          catch (const InputError &e)
+            {
+              mesh_error = e.what();
+            }
         mesh_error = Utilities::MPI::broadcast(comm, mesh_error, 0);
         if (!mesh_error.empty())
           throw InputError("", "", mesh_error);
@@ -233,6 +244,7 @@ namespace pdfem
                              "cannot read the mesh '" + msh + "'",
                              "a gmsh mesh of dimension " + std::to_string(dim));
           }
+        Mesh::check_cell_shapes(tria, msh);
         // Node sets (physical points) as vertex indices, which global
         // refinement keeps; read only when the scene uses them (so that a
         // mesh with unused physical points in another format still works).

@@ -78,16 +78,18 @@ common() {
 }
 
 # set_variant NAME: the model options (array vopts) and the CSV labels model, fit, stab of a variant:
-# pdlsm | pdlsm-free | energy:FIT:STABILISATION | fe.
+# pdlsm | pdlsm-free | energy:FIT:STABILISATION[:BROKEN_BONDS] | fe (BROKEN_BONDS: refit; model
+# "pdlsm energy refit"; the default condense is "pdlsm energy").
 set_variant() {
   fit="" stab=""
   case $1 in
     pdlsm) model="pdlsm"; vopts=(--set "Peridynamics/Model=pdlsm") ;;
     pdlsm-free) model="pdlsm free faces"
       vopts=(--set "Peridynamics/Model=pdlsm" --set "Peridynamics/Crack faces=free surface") ;;
-    energy:*) IFS=: read -r _ fit stab <<< "$1"; model="pdlsm energy"
+    energy:*) IFS=: read -r _ fit stab broken <<< "$1"; model="pdlsm energy${broken:+ $broken}"
       vopts=(--set "Peridynamics/Model=pdlsm energy" --set "Peridynamics/Energy form/Gradient fit=$fit"
-             --set "Peridynamics/Energy form/Stabilisation=$stab") ;;
+             --set "Peridynamics/Energy form/Stabilisation=$stab"
+             --set "Peridynamics/Energy form/Broken bonds=${broken:-condense}") ;;
     fe) model="fe"; vopts=(--set "Mesh/PD regions=none") ;;
   esac
 }
@@ -338,7 +340,7 @@ if [[ $sections == *e* ]]; then
   for n in 39 59 79; do
     incl_mesh $n
     N=$(awk -v n="$n" 'BEGIN { printf "%d", 0.256 * n + 0.5 }')
-    for v in pdlsm pdlsm-free energy:linear:1; do
+    for v in pdlsm pdlsm-free energy:linear:1 energy:linear:1:refit; do
       set_variant "$v"
       dir="$work/growth_${v//:/_}_$n"
       run "$dir" "$incl_prm" "${vopts[@]}" "${grow[@]}" --set "Mesh/Input file=$work/inclined_$n.msh" \

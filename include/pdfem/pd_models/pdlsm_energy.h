@@ -59,7 +59,7 @@ namespace pdfem
      *                                     b: the lost members),
      *
      * so that E_k'(u) <= E_k(u) for every u: breaking can only release
-     * energy (theory.md §12.6); "refit" fits the weights again as at
+     * energy (theory.md §12.3); "refit" fits the weights again as at
      * set-up (the energy may rise).
      */
     template <int dim>
@@ -167,6 +167,9 @@ namespace pdfem
       /// and the stabilisation (zero when broken).
       std::vector<double>       bond_weight;
       std::vector<std::uint8_t> fitted;
+      /// Per bond: intact when its family was last fitted (the bonds of
+      /// the family's weights; condense() reads them before the refit).
+      std::vector<std::uint8_t> in_fit;
       /// Per owner: its condensed energy (null while it has none).
       std::vector<std::unique_ptr<CondensedFamily>> condensed;
       /// |sum_k V_k g_kj - s_j| / |s| after the solve, and its CG
