@@ -107,17 +107,29 @@ namespace pdfem
     std::string
     clean_dealii_message(const std::string &what)
     {
-      const std::string key = "Additional information:";
-      auto              pos = what.find(key);
-      std::string       msg =
-        pos == std::string::npos ? what : what.substr(pos + key.size());
-      // deal.II appends the stack trace of where it threw: not for users.
-      const auto trace = msg.find("Stacktrace:");
-      if (trace != std::string::npos)
-        msg.erase(trace);
-      msg = std::regex_replace(msg, std::regex("-{5,}"), "");
-      msg = std::regex_replace(msg, std::regex("\\s+"), " ");
-      return trim(msg);
+      // The text after @p key up to the stack trace, on one line.
+      const auto part = [&](const std::string &key) {
+        const auto  pos = what.find(key);
+        std::string msg =
+          pos == std::string::npos ? what : what.substr(pos + key.size());
+        // deal.II appends the stack trace of where it threw: not for users.
+        const auto trace = msg.find("Stacktrace:");
+        if (trace != std::string::npos)
+          msg.erase(trace);
+        const auto info = msg.find("Additional information:");
+        if (info != std::string::npos)
+          msg.erase(info);
+        msg = std::regex_replace(msg, std::regex("-{5,}"), "");
+        msg = std::regex_replace(msg, std::regex("\\s+"), " ");
+        return trim(msg);
+      };
+      // The explanation, or else the condition that failed (an Amesos
+      // failure has no explanation).
+      std::string msg = part("Additional information:");
+      if (msg.empty() &&
+          what.find("The violated condition was:") != std::string::npos)
+        msg = part("The violated condition was:");
+      return msg;
     }
   } // namespace ParameterTools
 } // namespace pdfem

@@ -5,6 +5,7 @@
 // matrix K_N = c_m M + c_k K factorised once and reused (specs/004 §2.4).
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/parameter_tools.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -336,9 +337,10 @@ namespace pdfem
         }
       catch (const std::exception &e)
         {
-          throw RunFailure("linear solver diverged",
-                           std::string(name) + " on M + beta dt^2 K: " +
-                             std::string(e.what()).substr(0, 200));
+          throw RunFailure(
+            "linear solver diverged",
+            std::string(name) + " on M + beta dt^2 K: " +
+              ParameterTools::clean_dealii_message(e.what()).substr(0, 200));
         }
       return control.last_step();
     }

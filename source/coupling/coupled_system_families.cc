@@ -285,12 +285,14 @@ namespace pdfem
     CoupledSystem<dim>::Impl::update_decoupled()
     {
       decoupled.assign(families.owners.size(), 0);
+      fragment.resize(families.owners.size(), 0);
       for (std::size_t o = 0; o < families.owners.size(); ++o)
         decoupled[o] =
-          !is_fe[families.owners[o]] &&
-          std::none_of(families.intact.begin() + families.offsets[o],
-                       families.intact.begin() + families.offsets[o + 1],
-                       [](const std::uint8_t i) { return i != 0; });
+          fragment[o] ||
+          (!is_fe[families.owners[o]] &&
+           std::none_of(families.intact.begin() + families.offsets[o],
+                        families.intact.begin() + families.offsets[o + 1],
+                        [](const std::uint8_t i) { return i != 0; }));
     }
 
 #define INSTANTIATE(dim)                                       \

@@ -213,6 +213,37 @@ namespace pdfem
     }
 
     template <int dim>
+    unsigned long
+    CoupledSystem<dim>::hold_fragments(const unsigned int min_nodes)
+    {
+      Impl                           &s     = *impl;
+      const std::vector<unsigned int> label = s.piece_labels();
+      std::vector<unsigned int>       size(s.n_nodes, 0);
+      for (unsigned int k = 0; k < s.n_nodes; ++k)
+        ++size[label[k]];
+      unsigned long held = 0;
+      for (std::size_t o = 0; o < s.families.owners.size(); ++o)
+        {
+          const unsigned int k = s.families.owners[o];
+          if (!s.fragment[o] && !s.decoupled[o] && !s.is_fe[k] &&
+              size[label[k]] < min_nodes)
+            {
+              s.fragment[o] = 1;
+              ++held;
+            }
+        }
+      held = Utilities::MPI::sum(held, s.comm);
+      if (held > 0)
+        {
+          s.update_decoupled();
+          s.update_held();
+          s.block_inverse.clear();
+          s.auxiliary_stale = s.matrix_free;
+        }
+      return held;
+    }
+
+    template <int dim>
     const PDModels::Interface<dim> &
     CoupledSystem<dim>::pd_model() const
     {
@@ -230,7 +261,8 @@ namespace pdfem
   template const PD::Families             &CoupledSystem<dim>::families() const; \
   template const PDModels::Interface<dim> &CoupledSystem<dim>::pd_model()        \
     const;                                                                       \
-  template unsigned int CoupledSystem<dim>::count_pieces(unsigned int) const;    \
+  template unsigned int  CoupledSystem<dim>::count_pieces(unsigned int) const;   \
+  template unsigned long CoupledSystem<dim>::hold_fragments(unsigned int);       \
   template std::vector<unsigned int> CoupledSystem<dim>::Impl::piece_labels()    \
     const;                                                                       \
   template const TrilinosWrappers::SparseMatrix &                                \

@@ -324,6 +324,8 @@ namespace pdfem
       /// if it owns no family here.
       std::vector<std::size_t>  family_of;
       std::vector<std::uint8_t> decoupled; // per family owner (see above)
+      /// Per family owner: held as part of a fragment (hold_fragments()).
+      std::vector<std::uint8_t> fragment;
       /// Local index of each DoF of a node in the ghosted (relevant) vectors
       /// and, for owned nodes, in the owned vectors.
       std::vector<std::array<unsigned int, dim>> relevant_lid, owned_lid;

@@ -38,7 +38,8 @@ namespace pdfem
             {
               std::ostringstream s;
               s << "the body is cut through at step " << step
-                << " (load factor " << t << ")";
+                << " (load factor " << t << ")"
+                << (check.separation.empty() ? "" : ": ") << check.separation;
               throw RunFailure("separated", s.str());
             }
           if (check.grew && settings.hold_load_while_growing)

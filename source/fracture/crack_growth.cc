@@ -284,8 +284,8 @@ namespace pdfem
       if (a.broken_bonds > 0)
         {
           // Pieces smaller than 1 % of the nodes are fragments, not a cut.
-          const unsigned int n = results.position.size();
-          a.pieces             = system.count_pieces(std::max(3u, n / 100));
+          a.pieces =
+            system.count_pieces(smallest_piece(results.position.size()));
         }
     }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/exceptions.h>
 #include <pdfem/base/parameter_tools.h>
+#include <pdfem/base/plugins.h>
 #include <pdfem/io/parameters.h>
 #include <pdfem/pd_models/interface.h>
 
@@ -11,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sstream>
 
 namespace pdfem
 {
@@ -26,6 +28,74 @@ namespace pdfem
 
     namespace
     {
+      /// Every declared entry as "Subsection/.../Name" (read from the
+      /// handler's own listing).
+      std::vector<std::string>
+      declared_entries(const ParameterHandler &prm)
+      {
+        std::ostringstream listing;
+        prm.print_parameters(listing, ParameterHandler::ShortPRM);
+        std::istringstream       in(listing.str());
+        std::vector<std::string> path, entries;
+        for (std::string line; std::getline(in, line);)
+          {
+            line = trim(line);
+            if (line.rfind("subsection ", 0) == 0)
+              path.push_back(trim(line.substr(11)));
+            else if (line == "end" && !path.empty())
+              path.pop_back();
+            else if (line.rfind("set ", 0) == 0)
+              {
+                std::string entry;
+                for (const auto &p : path)
+                  entry += p + "/";
+                entries.push_back(
+                  entry + trim(line.substr(4, line.find('=') - 4)));
+              }
+          }
+        return entries;
+      }
+
+      /// " (did you mean 'Driver/Load steps'?)" for an unknown entry
+      /// @p name (a path or a bare name) that deal.II's message @p what
+      /// names; empty when nothing is close.
+      std::string
+      suggestion(const ParameterHandler &prm, std::string name)
+      {
+        if (name.empty())
+          return "";
+        const std::vector<std::string> entries = declared_entries(prm);
+        const std::string leaf = name.substr(name.rfind('/') + 1);
+        std::vector<std::string> leaves;
+        for (const auto &e : entries)
+          leaves.push_back(e.substr(e.rfind('/') + 1));
+        // The same name in another subsection first, else the nearest.
+        std::string near = Plugins::nearest_name(name, entries);
+        if (near.empty())
+          {
+            const std::string near_leaf = Plugins::nearest_name(leaf, leaves);
+            for (std::size_t i = 0; i < entries.size() && near.empty(); ++i)
+              if (!near_leaf.empty() && leaves[i] == near_leaf)
+                near = entries[i];
+          }
+        return near.empty() ? "" : " (did you mean '" + near + "'?)";
+      }
+
+      /// The entry deal.II's message @p what says is unknown: "name
+      /// <X>" or "entry <X>".
+      std::string
+      unknown_entry(const std::string &what)
+      {
+        for (const std::string key : {"with name <", "for entry <"})
+          {
+            const auto at = what.find(key);
+            if (at != std::string::npos)
+              return what.substr(at + key.size(),
+                                 what.find('>', at) - at - key.size());
+          }
+        return "";
+      }
+
       std::vector<BoundaryEntry>
       parse_boundary_entries(const std::string &text,
                              const std::string &file,
@@ -498,7 +568,8 @@ namespace pdfem
         {
           throw InputError(file,
                            "",
-                           clean_dealii_message(e.what()),
+                           clean_dealii_message(e.what()) +
+                             suggestion(prm, unknown_entry(e.what())),
                            "see 'pdfem --print-parameters'");
         }
       for (const auto &[path, value] : overrides)
@@ -516,7 +587,10 @@ namespace pdfem
               throw InputError("--set",
                                path,
                                "cannot set it to '" + value +
-                                 "': " + clean_dealii_message(e.what()),
+                                 "': " + clean_dealii_message(e.what()) +
+                                 (unknown_entry(e.what()).empty() ?
+                                    "" :
+                                    suggestion(prm, path)),
                                "see 'pdfem --print-parameters'");
             }
           for (; depth > 0; --depth)

@@ -11,6 +11,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -172,22 +173,81 @@ namespace pdfem
           }
       }
 
+      /// The header of a 4.1 section of blocks ($Nodes, $Elements): its
+      /// counts and tag range, checked against the blocks as they come.
+      struct BlockedSection
+      {
+        BlockedSection(MshLines          &lines,
+                       const std::string &section,
+                       const std::string &item)
+          : lines(lines)
+          , section(section)
+          , item(item)
+        {
+          const std::string Item(1, char(std::toupper(item[0])));
+          const auto       &h =
+            lines.fields(section,
+                         4,
+                         "numEntityBlocks num" + Item + item.substr(1) +
+                           "s min" + Item + item.substr(1) + "Tag max" + Item +
+                           item.substr(1) + "Tag");
+          blocks = lines.integer(h[0], "numEntityBlocks");
+          n      = lines.integer(h[1], "the number of " + item + "s");
+          lo     = lines.integer(h[2], "the smallest " + item + " tag");
+          hi     = lines.integer(h[3], "the largest " + item + " tag");
+        }
+
+        /// A block of @p m more items.
+        void
+        add_block(const unsigned long m)
+        {
+          if (m > n - total)
+            lines.fail("the " + item + " blocks hold more than the " +
+                       std::to_string(n) + " " + item +
+                       "s the header declares");
+          total += m;
+        }
+
+        /// The tag @p t of an item.
+        unsigned long
+        tag(const std::string &t) const
+        {
+          const unsigned long v = lines.integer(t, item + " tag");
+          if (v < lo || v > hi)
+            lines.fail(item + " tag " + t + " outside the declared range " +
+                       std::to_string(lo) + ".." + std::to_string(hi));
+          return v;
+        }
+
+        /// After the last block: the counts agree, the section ends.
+        void
+        finish()
+        {
+          if (total != n)
+            lines.fail("the " + item + " blocks hold " + std::to_string(total) +
+                       " " + item + "s, the header declares " +
+                       std::to_string(n));
+          lines.expect("$End" + section.substr(1),
+                       "after the counted " + item + " blocks");
+        }
+
+        MshLines         &lines;
+        const std::string section, item;
+        unsigned long     blocks = 0, n = 0, lo = 0, hi = 0, total = 0;
+      };
+
       void
       check_nodes_41(MshLines &lines, std::unordered_set<unsigned long> &tags)
       {
         const std::string S = "$Nodes";
-        auto h = lines.fields(S, 4, "numEntityBlocks numNodes minTag maxTag");
-        const unsigned long blocks = lines.integer(h[0], "numEntityBlocks"),
-                            n      = lines.integer(h[1], "numNodes"),
-                            lo     = lines.integer(h[2], "minNodeTag"),
-                            hi     = lines.integer(h[3], "maxNodeTag");
-        unsigned long total        = 0;
-        for (unsigned long b = 0; b < blocks; ++b)
+        BlockedSection    section(lines, S, "node");
+        for (unsigned long b = 0; b < section.blocks; ++b)
           {
-            auto                t   = lines.fields(S,
-                                  4,
-                                  "a node block header: entityDim entityTag "
-                                                   "parametric numNodesInBlock");
+            const auto         &t   = lines.fields(S,
+                                         4,
+                                         "a node block header: entityDim "
+                                                   "entityTag parametric "
+                                                   "numNodesInBlock");
             const unsigned long dim = lines.integer(t[0], "entityDim");
             lines.integer(t[1], "entityTag");
             const unsigned long parametric = lines.integer(t[2], "parametric");
@@ -196,32 +256,20 @@ namespace pdfem
               lines.fail("a node block header with entityDim " + t[0] +
                          " and parametric " + t[2] +
                          " (allowed: 0..3 and 0 or 1)");
-            if (m > n - total)
-              lines.fail("the node blocks hold more than the " +
-                         std::to_string(n) + " nodes the header declares");
+            section.add_block(m);
             for (unsigned long i = 0; i < m; ++i)
               {
-                const unsigned long tag =
-                  lines.integer(lines.fields(S, 1, "a node tag")[0],
-                                "node tag");
-                if (tag < lo || tag > hi)
-                  lines.fail("node tag " + std::to_string(tag) +
-                             " outside the declared range " +
-                             std::to_string(lo) + ".." + std::to_string(hi));
-                if (!tags.insert(tag).second)
-                  lines.fail("node tag " + std::to_string(tag) + " twice");
+                const std::string t = lines.fields(S, 1, "a node tag")[0];
+                if (!tags.insert(section.tag(t)).second)
+                  lines.fail("node tag " + t + " twice");
               }
             const std::size_t coordinates = 3 + (parametric ? dim : 0);
             for (unsigned long i = 0; i < m; ++i)
               for (const auto &x :
                    lines.fields(S, coordinates, "the node's coordinates"))
                 lines.real(x, "coordinate");
-            total += m;
           }
-        if (total != n)
-          lines.fail("the node blocks hold " + std::to_string(total) +
-                     " nodes, the header declares " + std::to_string(n));
-        lines.expect("$EndNodes", "after the counted node blocks");
+        section.finish();
       }
 
       void
@@ -229,19 +277,14 @@ namespace pdfem
                         const std::unordered_set<unsigned long> &node_tags)
       {
         const std::string S = "$Elements";
-        auto              h =
-          lines.fields(S, 4, "numEntityBlocks numElements minTag maxTag");
-        const unsigned long blocks = lines.integer(h[0], "numEntityBlocks"),
-                            n      = lines.integer(h[1], "numElements"),
-                            lo     = lines.integer(h[2], "minElementTag"),
-                            hi     = lines.integer(h[3], "maxElementTag");
-        unsigned long total        = 0;
-        for (unsigned long b = 0; b < blocks; ++b)
+        BlockedSection    section(lines, S, "element");
+        for (unsigned long b = 0; b < section.blocks; ++b)
           {
-            auto t = lines.fields(S,
-                                  4,
-                                  "an element block header: entityDim "
-                                  "entityTag elementType numElementsInBlock");
+            const auto &t = lines.fields(S,
+                                         4,
+                                         "an element block header: entityDim "
+                                         "entityTag elementType "
+                                         "numElementsInBlock");
             if (lines.integer(t[0], "entityDim") > 3)
               lines.fail("an element block header with entityDim " + t[0] +
                          " (allowed: 0..3)");
@@ -251,28 +294,18 @@ namespace pdfem
             const unsigned int  k = nodes_of_element_type(type);
             if (k == 0)
               lines.fail("element type " + t[2] + " is not a gmsh type");
-            if (m > n - total)
-              lines.fail("the element blocks hold more than the " +
-                         std::to_string(n) + " elements the header declares");
+            section.add_block(m);
             for (unsigned long i = 0; i < m; ++i)
               {
-                const auto         &e   = lines.fields(S,
+                const auto &e = lines.fields(S,
                                              1 + k,
                                              "an element tag and its " +
                                                std::to_string(k) + " nodes");
-                const unsigned long tag = lines.integer(e[0], "element tag");
-                if (tag < lo || tag > hi)
-                  lines.fail("element tag " + e[0] +
-                             " outside the declared range " +
-                             std::to_string(lo) + ".." + std::to_string(hi));
+                section.tag(e[0]);
                 check_element_nodes(lines, e, 1, node_tags);
               }
-            total += m;
           }
-        if (total != n)
-          lines.fail("the element blocks hold " + std::to_string(total) +
-                     " elements, the header declares " + std::to_string(n));
-        lines.expect("$EndElements", "after the counted element blocks");
+        section.finish();
       }
 
       void

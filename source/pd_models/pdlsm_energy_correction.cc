@@ -4,6 +4,7 @@
 // preconditioned by a sparse factorisation of the regularised operator.
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/parameter_tools.h>
 #include <pdfem/pd/families.h>
 #include <pdfem/pd_models/pdlsm_energy.h>
 
@@ -142,7 +143,8 @@ namespace pdfem
                 "singular matrix",
                 "the integration-constraint correction (Peridynamics/Model = "
                 "pdlsm energy) could not factorise its operator: " +
-                  std::string(e.what()).substr(0, 200));
+                  ParameterTools::clean_dealii_message(e.what()).substr(0,
+                                                                        200));
             }
           b.reinit(owned, comm);
           x.reinit(owned, comm);

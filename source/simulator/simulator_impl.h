@@ -98,6 +98,10 @@ namespace pdfem
     Drivers::GrowthCheck
     after_equilibrium(const Drivers::StepRecord &record,
                       bool                       allow_growth) override;
+    /// Set @p check separated (with its reason) when the grips' secant
+    /// stiffness at load factor @p t fell below 1e-3 of its peak.
+    void
+    separated_by_load(double t, Drivers::GrowthCheck &check);
     bool
     after_time_step(const Drivers::SystemInterface::Vector &u_now,
                     double                                  t) override;
@@ -173,6 +177,9 @@ namespace pdfem
     Coupling::ProblemSize                     initial_size;
     double                                    load_factor = 0.;
     unsigned int                              n_steps     = 0;
+    /// The largest secant stiffness of the grips so far (quasi-static
+    /// growth; separated_by_load()).
+    double peak_grip_stiffness = 0.;
     /// Dynamic runs: the steps to the end time (once the step is known).
     unsigned int                          n_total_steps = 0;
     std::chrono::steady_clock::time_point run_start;

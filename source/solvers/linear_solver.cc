@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/parameter_tools.h>
 #include <pdfem/base/thread_team.h>
 #include <pdfem/solvers/linear_solver.h>
 #include <pdfem/solvers/ml_threaded_products.h>
@@ -105,7 +106,8 @@ namespace pdfem
             {
               throw RunFailure("singular matrix",
                                "the direct solver failed: " +
-                                 std::string(e.what()).substr(0, 200));
+                                 ParameterTools::clean_dealii_message(e.what())
+                                   .substr(0, 200));
             }
         }
       else if (settings.conjugate_gradients())
@@ -232,8 +234,10 @@ namespace pdfem
         }
       catch (const std::exception &e)
         {
-          throw RunFailure("linear solver diverged",
-                           "CG: " + std::string(e.what()).substr(0, 200));
+          throw RunFailure(
+            "linear solver diverged",
+            "CG: " +
+              ParameterTools::clean_dealii_message(e.what()).substr(0, 200));
         }
       return control.last_step();
     }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Output integrity: a file is written whole or not at all, and a failed
 // write is reported, not ignored.
+#include <pdfem/base/parameter_tools.h>
 #include <pdfem/io/atomic_file.h>
 #include <pdfem/io/history.h>
 
@@ -60,5 +61,28 @@ namespace
     for (int i = 0; i < 4 && written; ++i)
       written = history.add_row(row);
     EXPECT_FALSE(written);
+  }
+  TEST(Messages, DealIIReportsBecomeOneLine)
+  {
+    // What Amesos_Mumps threw on a singular matrix (no explanation, only
+    // the condition) and a report with an explanation and a stack trace.
+    const std::string amesos =
+      "\n--------------------------------------------------------\n"
+      "An error occurred in line <842> of file "
+      "<./source/lac/trilinos_solver.cc> in function\n"
+      "    void dealii::TrilinosWrappers::SolverDirect::do_solve()\n"
+      "The violated condition was: \n"
+      "    ierr == 0\n"
+      "Additional information: \n"
+      "Stacktrace:\n-----------\n#0  libdeal.ii.so: f()\n";
+    EXPECT_EQ(pdfem::ParameterTools::clean_dealii_message(amesos), "ierr == 0");
+    const std::string explained =
+      "\n--------\nAn error occurred in line <1> of file <a.cc>\n"
+      "The violated condition was: \n    n > 0\n"
+      "Additional information: \n    the entry is\n    not declared\n"
+      "Stacktrace:\n#0 f()\n";
+    EXPECT_EQ(pdfem::ParameterTools::clean_dealii_message(explained),
+              "the entry is not declared");
+    EXPECT_EQ(pdfem::ParameterTools::clean_dealii_message("plain"), "plain");
   }
 } // namespace

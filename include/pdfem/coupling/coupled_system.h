@@ -440,6 +440,19 @@ namespace pdfem
       count_pieces(unsigned int min_nodes) const;
 
       /**
+       * Hold the PD nodes of every fragment where they are, like a node
+       * that lost every bond: a fragment is a piece (as in count_pieces())
+       * of fewer than @p min_nodes nodes. In a static solve a fragment that
+       * no prescribed displacement holds makes the matrix singular (two PD
+       * nodes bonded only to each other, cut loose by a growing crack).
+       * Nodes stay held for the rest of the run (bonds do not heal).
+       * Returns the number of nodes held now (collective). For static and
+       * quasi-static runs; dynamics lets fragments fly.
+       */
+      unsigned long
+      hold_fragments(unsigned int min_nodes);
+
+      /**
        * The rigid motions the prescribed displacements leave free, one
        * line per piece of the body (nodes joined by FE cells or intact
        * bonds, at least two) that they do not hold: its size, where it is

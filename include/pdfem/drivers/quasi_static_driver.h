@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <limits>
+#include <string>
 
 namespace pdfem
 {
@@ -22,6 +23,9 @@ namespace pdfem
       double critical_load_ratio = std::numeric_limits<double>::infinity();
       /// Is the body cut through? The run ends (exit state "separated").
       bool separated = false;
+      /// How the separation was found, for the message (empty: no piece
+      /// of the body links the grips any more).
+      std::string separation;
     };
 
     /**

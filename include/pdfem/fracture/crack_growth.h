@@ -136,6 +136,14 @@ namespace pdfem
                        const Coupling::NodalResults<dim> &results,
                        bool                               allow_growth);
 
+      /// The smallest piece of a body of @p n_nodes nodes that counts as a
+      /// piece: max(3, 1 % of the nodes); smaller ones are fragments.
+      static unsigned int
+      smallest_piece(unsigned int n_nodes)
+      {
+        return n_nodes / 100 > 3u ? n_nodes / 100 : 3u;
+      }
+
       /// After bonds broke: count the pieces of the body into @p a.
       static void
       count_pieces(Assessment                         &a,
