@@ -76,7 +76,10 @@ namespace pdfem
        * regularisation eps = 1e-8 makes it definite and leaves the
        * preconditioned spectrum in [lambda / (lambda + eps d), 1]: CG
        * needs 4-12 iterations where Jacobi needed hundreds to thousands
-       * and stagnated on fine meshes (residual 1e-3 at 26 000 nodes).
+       * and stagnated on fine meshes (residual 1e-3 at 26 000 nodes). ML's
+       * AMG instead stalled at 4e-6 after 260 iterations (centre-crack
+       * strip, 12 462 nodes, m = 4), where the factorisation takes 6.7 s
+       * (doc/theory.md §12.2).
        */
       template <int dim>
       class FactorisedOperator
