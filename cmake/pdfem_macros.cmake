@@ -13,6 +13,11 @@ macro(pdfem_setup_target _target)
   if(CMAKE_BUILD_TYPE STREQUAL "Release")
     target_compile_options(${_target} PRIVATE -g0)
   endif()
+  if(PDFEM_SANITIZE)
+    target_compile_options(${_target} PRIVATE -fsanitize=${PDFEM_SANITIZE} -fno-omit-frame-pointer
+                                              -fno-sanitize-recover=all)
+    target_link_options(${_target} PRIVATE -fsanitize=${PDFEM_SANITIZE})
+  endif()
 endmacro()
 
 # The deal.II library a target set up by pdfem_setup_target links, DEBUG or RELEASE, into <_out>.
