@@ -23,6 +23,13 @@ namespace pdfem
     {
       model->bonds_changed(changed, free_surfaces);
       update_decoupled();
+      decoupled_changed();
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::decoupled_changed()
+    {
       update_held();
       block_inverse.clear(); // rebuilt by the next solve
       auxiliary_stale = matrix_free;
@@ -236,9 +243,7 @@ namespace pdfem
       if (held > 0)
         {
           s.update_decoupled();
-          s.update_held();
-          s.block_inverse.clear();
-          s.auxiliary_stale = s.matrix_free;
+          s.decoupled_changed();
         }
       return held;
     }

@@ -145,6 +145,11 @@ namespace pdfem
       void
       bonds_changed(const std::vector<std::size_t> &changed,
                     bool                            free_surfaces);
+      /// After the decoupled owners changed: held DoFs listed again, the
+      /// block-Jacobi inverse and the auxiliary matrix rebuilt by the next
+      /// solve.
+      void
+      decoupled_changed();
       /// The field @p x (ghosted) as the model reads it.
       PDModels::NodalField<dim>
       nodal_field(const dealii::TrilinosWrappers::MPI::Vector &x) const

@@ -49,24 +49,23 @@ namespace pdfem
                 std::string entry;
                 for (const auto &p : path)
                   entry += p + "/";
-                entries.push_back(
-                  entry + trim(line.substr(4, line.find('=') - 4)));
+                entries.push_back(entry +
+                                  trim(line.substr(4, line.find('=') - 4)));
               }
           }
         return entries;
       }
 
       /// " (did you mean 'Driver/Load steps'?)" for an unknown entry
-      /// @p name (a path or a bare name) that deal.II's message @p what
-      /// names; empty when nothing is close.
+      /// @p name (a path or a bare name); empty when nothing is close.
       std::string
-      suggestion(const ParameterHandler &prm, std::string name)
+      suggestion(const ParameterHandler &prm, const std::string &name)
       {
         if (name.empty())
           return "";
         const std::vector<std::string> entries = declared_entries(prm);
-        const std::string leaf = name.substr(name.rfind('/') + 1);
-        std::vector<std::string> leaves;
+        const std::string              leaf = name.substr(name.rfind('/') + 1);
+        std::vector<std::string>       leaves;
         for (const auto &e : entries)
           leaves.push_back(e.substr(e.rfind('/') + 1));
         // The same name in another subsection first, else the nearest.
