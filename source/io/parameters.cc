@@ -565,10 +565,13 @@ namespace pdfem
         }
       catch (const dealii::ExceptionBase &e)
         {
+          // deal.II wraps its message at a width, so a name may be split
+          // across lines (where depends on the file name's length): read
+          // the unknown entry from the joined one-line message.
+          const std::string message = clean_dealii_message(e.what());
           throw InputError(file,
                            "",
-                           clean_dealii_message(e.what()) +
-                             suggestion(prm, unknown_entry(e.what())),
+                           message + suggestion(prm, unknown_entry(message)),
                            "see 'pdfem --print-parameters'");
         }
       for (const auto &[path, value] : overrides)
@@ -583,14 +586,15 @@ namespace pdfem
             }
           catch (const dealii::ExceptionBase &e)
             {
-              throw InputError("--set",
-                               path,
-                               "cannot set it to '" + value +
-                                 "': " + clean_dealii_message(e.what()) +
-                                 (unknown_entry(e.what()).empty() ?
-                                    "" :
-                                    suggestion(prm, path)),
-                               "see 'pdfem --print-parameters'");
+              throw InputError(
+                "--set",
+                path,
+                "cannot set it to '" + value +
+                  "': " + clean_dealii_message(e.what()) +
+                  (unknown_entry(clean_dealii_message(e.what())).empty() ?
+                     "" :
+                     suggestion(prm, path)),
+                "see 'pdfem --print-parameters'");
             }
           for (; depth > 0; --depth)
             prm.leave_subsection();

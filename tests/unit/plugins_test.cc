@@ -28,6 +28,7 @@
 namespace
 {
   using namespace pdfem;
+  namespace fs = std::filesystem;
 
   /// A driver of this program: the static driver's single step, counted.
   class CountingDriver : public Drivers::Interface
@@ -133,6 +134,40 @@ namespace
     EXPECT_THROW(Fracture::create_criterion<2>("mtcs", "scene.prm"),
                  InputError);
     EXPECT_EQ(Fracture::create_criterion<2>("none", "scene.prm"), nullptr);
+  }
+
+  TEST(Parameters, MisspeltEntrySuggestedWhateverTheFilesPath)
+  {
+    // deal.II wraps its report at a fixed width, so where the unknown name
+    // falls depends on the length of the file's path; the suggestion must
+    // not (CI, under a longer path, once lost it).
+    const fs::path base = fs::temp_directory_path() / "pdfem_misspelt";
+    fs::remove_all(base);
+    for (unsigned int length = 1; length <= 48; ++length)
+      {
+        const fs::path folder = base / std::string(length, 'd');
+        fs::create_directories(folder);
+        const std::string file = (folder / "scene.prm").string();
+        std::ofstream(file) << "set Dimension = 2\n"
+                               "subsection Driver\n"
+                               "  set Load stepz = 1\n"
+                               "end\n";
+        Parameters::Scene scene;
+        try
+          {
+            scene.read(file);
+            ADD_FAILURE() << "a misspelt entry was accepted";
+          }
+        catch (const InputError &e)
+          {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("did you mean 'Driver/Load steps'?"),
+                      std::string::npos)
+              << what;
+            EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+          }
+      }
+    fs::remove_all(base);
   }
 
   TEST(Plugins, EachPluginChecksItsCompatibility)
