@@ -3,6 +3,7 @@
 # - while a run is going, summary.json says 'running' (a killed run is never taken for a finished one);
 # - SIGTERM and SIGINT end a run after the current step with exit status 3, summary.json says
 #   'interrupted' and names the signal, and history.csv ends with the step the run stopped at;
+#   a driver that can resume writes a checkpoint first (restart_test.sh restarts from one);
 # - parameters.prm in the output folder (every --set applied) repeats the run: the same nodes.csv;
 # - a run removes the outputs an earlier run left in its folder, and no other file;
 # - an output that cannot be written (the folder removed mid-run) ends the run with 'io error'.
@@ -42,6 +43,9 @@ run_case() {
 
 # explicit dynamics, 100 times its usual end time
 run_case explicit TERM dynamics_wave_plate_plane_stress.prm --set "Driver/End time=2.2e-2"
+# a resumable driver writes a checkpoint on the signal and says how to go on
+[ -f "$work/explicit/checkpoint/rank-0.state" ] || fail "explicit: no checkpoint after SIGTERM"
+grep -q "go on with --restart" "$work/explicit.log" || fail "explicit: the message does not say how to go on"
 # Newton with stability checks, many load steps
 run_case newton INT rnp_cracked_plate_hard.prm --set "Driver/Load steps=2000"
 
@@ -65,10 +69,16 @@ grep -q "io error" "$work/removed.log" || fail "removed folder: no 'io error' me
 ! grep -qi "terminate\|Stacktrace\|Aborted" "$work/removed.log" || fail "removed folder: a crash"
 echo "removed folder: io error"
 
+# --restart without a checkpoint there: one line, status 2, no folder made
+"$pdfem" "$scenes/patch_2d_quad.prm" --restart "$work/none" > "$work/none.log" 2>&1
+[ $? -eq 2 ] || fail "--restart without a checkpoint: status not 2"
+grep -q "no checkpoint there" "$work/none.log" || fail "--restart without a checkpoint: message"
+[ ! -e "$work/none" ] || fail "--restart without a checkpoint made its folder"
+
 # parameters.prm repeats the run, from another folder
 "$pdfem" "$scenes/patch_2d_quad.prm" --output "$work/first" --quiet --set "Output/Write nodes csv=true" \
   || fail "patch_2d_quad did not complete"
-grep -q "Write nodes csv = true" "$work/first/parameters.prm" || fail "parameters.prm lacks the --set value"
+grep -q "Write nodes csv *= true" "$work/first/parameters.prm" || fail "parameters.prm lacks the --set value"
 # ... into a folder with an earlier run's outputs: those go, other files stay
 mkdir -p "$work/again" && touch "$work/again/solution_00099.vtu" "$work/again/crack_paths.csv" \
   "$work/again/notes.txt"

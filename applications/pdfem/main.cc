@@ -23,7 +23,7 @@ namespace
       << "pdfem " << PDFEM_VERSION
       << ": coupled peridynamics (PDLSM) and finite elements\n\n"
          "Usage:\n"
-         "  pdfem SCENE.prm [--output DIR] [--quiet]\n"
+         "  pdfem SCENE.prm [--output DIR] [--quiet] [--restart DIR]\n"
          "  mpirun -np N pdfem SCENE.prm ...\n"
          "  pdfem --print-parameters | --list-plugins\n"
          "  pdfem --help | --version\n\n"
@@ -35,6 +35,10 @@ namespace
          "  --set PATH=VALUE     override a parameter, e.g. --set "
          "\"Mesh/Global refinements=2\"\n"
          "                       (repeatable)\n"
+         "  --restart DIR        go on from the checkpoint in the output "
+         "folder DIR\n"
+         "                       (Output/Checkpoint steps, or a SIGINT/SIGTERM "
+         "wrote it)\n"
          "  --print-parameters   every scene parameter with its default and "
          "documentation\n"
          "  --list-plugins       every registered driver, crack criterion and "
@@ -114,6 +118,17 @@ main(int argc, char **argv)
           options.overrides.emplace_back(assignment.substr(0, eq),
                                          assignment.substr(eq + 1));
         }
+      else if (arg == "--restart")
+        {
+          if (i + 1 >= argc)
+            {
+              if (root)
+                std::cerr << "pdfem: error: --restart needs the output folder "
+                             "of the run to go on with\n";
+              return 2;
+            }
+          options.restart = argv[++i];
+        }
       else if (arg == "--output" || arg == "-o")
         {
           if (i + 1 >= argc)
@@ -129,7 +144,7 @@ main(int argc, char **argv)
           if (root)
             std::cerr << "pdfem: error: unknown option '" << arg
                       << "' (allowed: --output DIR, --quiet, --set PATH=VALUE, "
-                         "--help, "
+                         "--restart DIR, --help, "
                          "--version, --print-parameters, --list-plugins)\n";
           return 2;
         }

@@ -2,6 +2,8 @@
 // CoupledSystem: what crack growth needs (breaking bonds, listing the intact
 // ones, counting the pieces the body is in).
 #include <pdfem/base/config.h>
+#include <pdfem/base/exceptions.h>
+#include <pdfem/base/state_archive.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -94,6 +96,9 @@ namespace pdfem
             }
           if (s.settings.free_crack_faces)
             s.add_crack_face_area(cracks);
+          typename Impl::FractureEvent event;
+          event.cracks = cracks;
+          s.events.push_back(std::move(event));
           n = Utilities::MPI::sum(n, s.comm);
           if (n > 0)
             s.bonds_changed(cut_families, s.settings.free_crack_faces);
@@ -106,10 +111,12 @@ namespace pdfem
     CoupledSystem<dim>::break_bonds_if(
       const std::function<bool(unsigned int, unsigned int)> &breaks)
     {
-      Impl                    &s = *impl;
-      PD::Families            &f = s.families;
-      unsigned long            n = 0;
-      std::vector<std::size_t> changed;
+      Impl                        &s = *impl;
+      PD::Families                &f = s.families;
+      unsigned long                n = 0;
+      std::vector<std::size_t>     changed;
+      typename Impl::FractureEvent event;
+      event.kind = Impl::FractureEvent::predicate;
       for (std::size_t o = 0; o < f.owners.size(); ++o)
         {
           const unsigned int k = f.owners[o];
@@ -121,6 +128,7 @@ namespace pdfem
                 breaks(k, f.members[b]))
               {
                 f.intact[b] = 0;
+                event.bonds.push_back({{k, f.members[b]}});
                 ++n;
                 lost = true;
               }
@@ -129,7 +137,10 @@ namespace pdfem
         }
       n = Utilities::MPI::sum(n, s.comm);
       if (n > 0)
-        s.bonds_changed(changed, false);
+        {
+          s.bonds_changed(changed, false);
+          s.events.push_back(std::move(event));
+        }
       return n;
     }
 
@@ -244,8 +255,86 @@ namespace pdfem
         {
           s.update_decoupled();
           s.decoupled_changed();
+          typename Impl::FractureEvent event;
+          event.kind      = Impl::FractureEvent::fragments;
+          event.min_nodes = min_nodes;
+          s.events.push_back(std::move(event));
         }
       return held;
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::save_fracture_state(StateArchive &state) const
+    {
+      const auto &events = impl->events;
+      state.put("system/events", events.size());
+      for (std::size_t e = 0; e < events.size(); ++e)
+        {
+          const std::string prefix = "system/event " + std::to_string(e) + "/";
+          state.put(prefix + "kind", events[e].kind);
+          state.put(prefix + "cracks", events[e].cracks);
+          state.put(prefix + "bonds", events[e].bonds);
+          state.put(prefix + "min nodes", events[e].min_nodes);
+        }
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::forget_preconditioner()
+    {
+      Impl &s = *impl;
+      s.solver.forget_preconditioner();
+      // The auxiliary matrix is assembled whole at the next solve, not
+      // updated in place (which rounds differently).
+      s.auxiliary_cut.clear();
+      s.auxiliary_stale = s.matrix_free;
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::restore_fracture_state(const StateArchive &state)
+    {
+      AssertThrow(impl->events.empty(),
+                  ExcMessage("restore_fracture_state() on a system whose "
+                             "bonds already changed"));
+      using Event                = typename Impl::FractureEvent;
+      const std::size_t n_events = state.get<std::size_t>("system/events");
+      for (std::size_t e = 0; e < n_events; ++e)
+        {
+          const std::string prefix = "system/event " + std::to_string(e) + "/";
+          switch (state.get<typename Event::Kind>(prefix + "kind"))
+            {
+              case Event::cut:
+                break_bonds(
+                  state.get_vector<Mesh::Crack<dim>>(prefix + "cracks"));
+                break;
+              case Event::predicate:
+                {
+                  auto bonds = state.get_vector<std::array<unsigned int, 2>>(
+                    prefix + "bonds");
+                  std::sort(bonds.begin(), bonds.end());
+                  break_bonds_if(
+                    [&bonds](const unsigned int k, const unsigned int m) {
+                      return std::binary_search(bonds.begin(),
+                                                bonds.end(),
+                                                std::array<unsigned int, 2>{
+                                                  {k, m}});
+                    });
+                  break;
+                }
+              case Event::fragments:
+                hold_fragments(state.get<unsigned int>(prefix + "min nodes"));
+                break;
+              default:
+                throw InputError("",
+                                 "--restart",
+                                 "the checkpoint's fracture history has an "
+                                 "event of unknown kind");
+            }
+        }
+      // As the checkpointed run did right after its checkpoint.
+      forget_preconditioner();
     }
 
     template <int dim>
@@ -268,6 +357,10 @@ namespace pdfem
     const;                                                                       \
   template unsigned int  CoupledSystem<dim>::count_pieces(unsigned int) const;   \
   template unsigned long CoupledSystem<dim>::hold_fragments(unsigned int);       \
+  template void CoupledSystem<dim>::save_fracture_state(StateArchive &) const;   \
+  template void CoupledSystem<dim>::restore_fracture_state(                      \
+    const StateArchive &);                                                       \
+  template void CoupledSystem<dim>::forget_preconditioner();                     \
   template std::vector<unsigned int> CoupledSystem<dim>::Impl::piece_labels()    \
     const;                                                                       \
   template const TrilinosWrappers::SparseMatrix &                                \

@@ -331,6 +331,23 @@ namespace pdfem
       std::vector<std::uint8_t> decoupled; // per family owner (see above)
       /// Per family owner: held as part of a fragment (hold_fragments()).
       std::vector<std::uint8_t> fragment;
+      /// What broke bonds or held nodes since construction, in order:
+      /// replayed by restore_fracture_state(), so that a restarted run has
+      /// the same bonds, and the same condensed stiffness to the bit.
+      struct FractureEvent
+      {
+        enum Kind : std::uint8_t
+        {
+          cut,       ///< break_bonds(cracks)
+          predicate, ///< break_bonds_if(): the (owner, member) pairs broken
+          fragments  ///< hold_fragments(min_nodes)
+        };
+        Kind                                     kind = cut;
+        std::vector<Mesh::Crack<dim>>            cracks;
+        std::vector<std::array<unsigned int, 2>> bonds;
+        unsigned int                             min_nodes = 0;
+      };
+      std::vector<FractureEvent> events;
       /// Local index of each DoF of a node in the ghosted (relevant) vectors
       /// and, for owned nodes, in the owned vectors.
       std::vector<std::array<unsigned int, dim>> relevant_lid, owned_lid;

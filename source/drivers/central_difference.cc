@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/exceptions.h>
 #include <pdfem/base/json_writer.h>
+#include <pdfem/base/state_archive.h>
 #include <pdfem/drivers/central_difference.h>
 #include <pdfem/drivers/interface.h>
 
@@ -24,19 +25,11 @@ namespace pdfem
     {}
 
     void
-    CentralDifference::run(DynamicSystemInterface &system,
-                           Vector                 &U,
-                           const Vector           &v0,
-                           const OnStep           &on_step,
-                           const AfterStep        &after_step)
+    CentralDifference::check_time_step()
     {
-      auto start = clock::now();
-      estimate =
-        estimate_stable_time_step(system, settings.eigenvalue_iterations);
-      time_spent.eigenvalue = seconds_since(start);
-      dt                    = settings.time_step > 0. ?
-                                settings.time_step :
-                                settings.safety_factor * estimate.critical_time_step;
+      dt = settings.time_step > 0. ?
+             settings.time_step :
+             settings.safety_factor * estimate.critical_time_step;
       if (!(dt > 0.))
         throw RunFailure("time step too large",
                          "no stable time step: the largest eigenvalue of "
@@ -54,6 +47,31 @@ namespace pdfem
             "most " +
             number(0.9 * estimate.critical_time_step) +
             " s (or Time step = auto)");
+    }
+
+    void
+    CentralDifference::run(DynamicSystemInterface &system,
+                           Vector                 &U,
+                           const Vector           &v0,
+                           const OnStep           &on_step,
+                           const AfterStep        &after_step,
+                           const Resume           &resume)
+    {
+      auto start = clock::now();
+      if (resume.from)
+        {
+          // The step and its estimate as they were: a power iteration now
+          // would see the broken bonds and give another step.
+          estimate = resume.from->get<StabilityEstimate>("driver/estimate");
+          dt       = resume.from->get<double>("driver/time step");
+        }
+      else
+        {
+          estimate =
+            estimate_stable_time_step(system, settings.eigenvalue_iterations);
+          time_spent.eigenvalue = seconds_since(start);
+          check_time_step();
+        }
       const unsigned int n_steps =
         static_cast<unsigned int>(std::ceil(settings.end_time / dt - 1e-9));
       const MPI_Comm comm = U.get_mpi_communicator();
@@ -71,11 +89,6 @@ namespace pdfem
       // tells a time-step instability (out of phase) from a growing mode.
       std::vector<double> half(n, 0.), half_old(n, 0.);
 
-      // t = 0: prescribed values, initial velocity on the free DoFs.
-      system.apply_dirichlet(U, 0.);
-      V = v0;
-      system.internal_force(U, F_int);
-      system.external_force(0., F_ext);
       const double *m            = M.begin();
       auto          acceleration = [&]() {
         double       *a  = A.begin();
@@ -92,25 +105,71 @@ namespace pdfem
             local += m[i] * v[i] * v[i];
         return 0.5 * dealii::Utilities::MPI::sum(local, comm);
       };
-      {
-        double *v = V.begin();
-        for (std::size_t i = 0; i < n; ++i)
-          if (held[i])
-            v[i] = 0.;
-      }
-      acceleration();
-      EnergyAccount energy;
-      energy.start(U, F_int, F_ext, held, kinetic(), comm);
+      EnergyAccount  energy;
       LeapfrogEnergy conserved;
-      conserved.start(U, comm);
-      DynamicRecord record;
-      record.time_step = dt;
-      energy.record(record);
-      on_step(record);
+      DynamicRecord  record;
+      unsigned int   first = 1;
+      if (resume.from)
+        {
+          // Everything the loop carries from one step to the next, as it
+          // was at the checkpoint.
+          const StateArchive &state = *resume.from;
+          first = state.get<unsigned int>("driver/next step");
+          state.get_owned("driver/v", V);
+          state.get_owned("driver/a", A);
+          state.get_owned("driver/f_int", F_int);
+          state.get_owned("driver/f_ext", F_ext);
+          held     = state.get_vector<char>("driver/held");
+          half     = state.get_vector<double>("driver/half");
+          half_old = state.get_vector<double>("driver/half old");
+          if (held.size() != n || half.size() != n || half_old.size() != n)
+            throw InputError("",
+                             "--restart",
+                             "the checkpoint's explicit state does not fit "
+                             "this run's vectors");
+          energy.load(state, "driver/energy/", U);
+          conserved.load(state, "driver/leapfrog/", U);
+        }
+      else
+        {
+          // t = 0: prescribed values, initial velocity on the free DoFs.
+          system.apply_dirichlet(U, 0.);
+          V = v0;
+          system.internal_force(U, F_int);
+          system.external_force(0., F_ext);
+          {
+            double *v = V.begin();
+            for (std::size_t i = 0; i < n; ++i)
+              if (held[i])
+                v[i] = 0.;
+          }
+          acceleration();
+          energy.start(U, F_int, F_ext, held, kinetic(), comm);
+          conserved.start(U, comm);
+          record.time_step = dt;
+          energy.record(record);
+          on_step(record);
+        }
+      const auto save = [&](StateArchive &state, const unsigned int step) {
+        state.put("driver/next step", step);
+        state.put("driver/estimate", estimate);
+        state.put("driver/time step", dt);
+        state.put_owned("driver/v", V);
+        state.put_owned("driver/a", A);
+        state.put_owned("driver/f_int", F_int);
+        state.put_owned("driver/f_ext", F_ext);
+        state.put("driver/held", held);
+        state.put("driver/half", half);
+        state.put("driver/half old", half_old);
+        energy.save(state, "driver/energy/");
+        conserved.save(state, "driver/leapfrog/");
+      };
 
       const auto loop_start = clock::now();
-      for (unsigned int step = 1; step <= n_steps; ++step)
+      for (unsigned int step = first; step <= n_steps; ++step)
         {
+          if (step > first && resume.boundary)
+            resume.boundary([&](StateArchive &state) { save(state, step); });
           // The last step ends at the end time exactly (it is shorter).
           const bool   last = step == n_steps;
           const double h = last ? settings.end_time - (n_steps - 1) * dt : dt;
@@ -262,6 +321,31 @@ namespace pdfem
           return {};
         }
 
+
+        bool
+        resumable() const override
+        {
+          return true;
+        }
+
+        void
+        run(Host &host) override
+        {
+          integrator = std::make_unique<CentralDifference>(parameters);
+          SystemInterface::Vector v0;
+          host.initial_velocity(v0);
+          integrator->run(
+            host.dynamic_system(),
+            host.solution(),
+            v0,
+            [&host](const DynamicRecord &record) {
+              host.record_time_step(record);
+            },
+            [&host](const SystemInterface::Vector &u, const double t) {
+              return host.after_time_step(u, t);
+            },
+            resume_through(host));
+        }
 
         std::string
         first_step_note(const DynamicRecord &record) const override

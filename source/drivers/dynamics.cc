@@ -238,6 +238,46 @@ namespace pdfem
       }
 
       void
+      EnergyAccount::save(StateArchive &state, const std::string &prefix) const
+      {
+        state.put_owned(prefix + "u_old", u_old);
+        state.put_owned(prefix + "force_old", force_old);
+        state.put(prefix + "scalars",
+                  std::vector<double>{
+                    e0, work, dissipated, kinetic, strain, peak, peak_total});
+        state.put(prefix + "totals",
+                  std::vector<double>(totals.begin(), totals.end()));
+        state.put(prefix + "errors",
+                  std::vector<double>(errors.begin(), errors.end()));
+      }
+
+      void
+      EnergyAccount::load(const StateArchive &state,
+                          const std::string  &prefix,
+                          const Vector       &like)
+      {
+        comm = like.get_mpi_communicator();
+        u_old.reinit(like.locally_owned_elements(), comm);
+        force_old.reinit(u_old);
+        state.get_owned(prefix + "u_old", u_old);
+        state.get_owned(prefix + "force_old", force_old);
+        const auto v = state.get_vector<double>(prefix + "scalars");
+        if (v.size() != 7)
+          throw InputError("", prefix + "scalars", "7 values expected");
+        e0           = v[0];
+        work         = v[1];
+        dissipated   = v[2];
+        kinetic      = v[3];
+        strain       = v[4];
+        peak         = v[5];
+        peak_total   = v[6];
+        const auto t = state.get_vector<double>(prefix + "totals");
+        const auto e = state.get_vector<double>(prefix + "errors");
+        totals.assign(t.begin(), t.end());
+        errors.assign(e.begin(), e.end());
+      }
+
+      void
       LeapfrogEnergy::start(const Vector &u, MPI_Comm communicator)
       {
         comm = communicator;
@@ -389,6 +429,38 @@ namespace pdfem
           << 1. / report.recommended_factor
           << " (dt <= " << report.recommended_time_step << " s)";
         throw RunFailure("time step too large", s.str());
+      }
+      void
+      LeapfrogEnergy::save(StateArchive &state, const std::string &prefix) const
+      {
+        state.put_owned(prefix + "u_before", u_before);
+        state.put_owned(prefix + "u_last", u_last);
+        state.put_owned(prefix + "force_last", force_last);
+        state.put(prefix + "steps", n_steps);
+        state.put(
+          prefix + "scalars",
+          std::vector<double>{g0, g, work, dissipated, scale, strain_part});
+      }
+
+      void
+      LeapfrogEnergy::load(const StateArchive &state,
+                           const std::string  &prefix,
+                           const Vector       &like)
+      {
+        start(like, like.get_mpi_communicator());
+        state.get_owned(prefix + "u_before", u_before);
+        state.get_owned(prefix + "u_last", u_last);
+        state.get_owned(prefix + "force_last", force_last);
+        n_steps      = state.get<unsigned int>(prefix + "steps");
+        const auto v = state.get_vector<double>(prefix + "scalars");
+        if (v.size() != 6)
+          throw InputError("", prefix + "scalars", "6 values expected");
+        g0          = v[0];
+        g           = v[1];
+        work        = v[2];
+        dissipated  = v[3];
+        scale       = v[4];
+        strain_part = v[5];
       }
     } // namespace internal
   }   // namespace Drivers

@@ -3,6 +3,7 @@
 #ifndef PDFEM_SOURCE_DRIVERS_DYNAMICS_INTERNAL_H
 #define PDFEM_SOURCE_DRIVERS_DYNAMICS_INTERNAL_H
 
+#include <pdfem/base/state_archive.h>
 #include <pdfem/drivers/dynamics.h>
 
 #include <deal.II/lac/trilinos_vector.h>
@@ -88,6 +89,15 @@ namespace pdfem
         double
         growth_per_step() const;
 
+        /// Put the account under @p prefix (checkpoint).
+        void
+        save(StateArchive &state, const std::string &prefix) const;
+        /// Take it back; @p like gives the vectors' layout.
+        void
+        load(const StateArchive &state,
+             const std::string  &prefix,
+             const Vector       &like);
+
       private:
         MPI_Comm           comm = MPI_COMM_SELF;
         Vector             u_old, force_old;
@@ -153,6 +163,15 @@ namespace pdfem
         /// Relative drift of the conserved energy (0 before step 2).
         double
         drift() const;
+
+        /// Put the account under @p prefix (checkpoint).
+        void
+        save(StateArchive &state, const std::string &prefix) const;
+        /// Take it back; @p like gives the vectors' layout.
+        void
+        load(const StateArchive &state,
+             const std::string  &prefix,
+             const Vector       &like);
 
       private:
         MPI_Comm     comm    = MPI_COMM_SELF;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/state_archive.h>
 #include <pdfem/drivers/interface.h>
 #include <pdfem/drivers/quasi_static_driver.h>
 
@@ -20,16 +21,30 @@ namespace pdfem
     QuasiStaticDriver::run(
       const std::function<SystemInterface &()>             &system,
       SystemInterface::Vector                              &u,
-      const std::function<GrowthCheck(const StepRecord &)> &after_step)
+      const std::function<GrowthCheck(const StepRecord &)> &after_step,
+      const Resume                                         &resume)
     {
       const double increment = settings.load_increment > 0. ?
                                  settings.load_increment :
                                  1. / settings.load_steps;
       double       t =
         settings.initial_load >= 0. ? settings.initial_load : increment;
-      double t_of_u = 0.; // the load factor u is in equilibrium with
-      for (unsigned int step = 1; step <= settings.load_steps; ++step)
+      double       t_of_u = 0.; // the load factor u is in equilibrium with
+      unsigned int first  = 1;
+      if (resume.from)
         {
+          first  = resume.from->get<unsigned int>("driver/next step");
+          t      = resume.from->get<double>("driver/load factor");
+          t_of_u = resume.from->get<double>("driver/load factor of u");
+        }
+      for (unsigned int step = first; step <= settings.load_steps; ++step)
+        {
+          if (step > first && resume.boundary)
+            resume.boundary([&](StateArchive &state) {
+              state.put("driver/next step", step);
+              state.put("driver/load factor", t);
+              state.put("driver/load factor of u", t_of_u);
+            });
           const StepRecord record =
             equilibrate(system(), u, t, t_of_u, step, settings, time_spent);
           t_of_u                  = t;
@@ -68,7 +83,14 @@ namespace pdfem
                       host.solution(),
                       [&host](const StepRecord &record) {
                         return host.after_equilibrium(record, true);
-                      });
+                      },
+                      resume_through(host));
+        }
+
+        bool
+        resumable() const override
+        {
+          return true;
         }
 
         bool

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/state_archive.h>
 #include <pdfem/drivers/interface.h>
 #include <pdfem/drivers/static_driver.h>
 
@@ -91,17 +92,26 @@ namespace pdfem
     void
     StaticDriver::run(SystemInterface                               &system,
                       SystemInterface::Vector                       &u,
-                      const std::function<void(const StepRecord &)> &on_step)
+                      const std::function<void(const StepRecord &)> &on_step,
+                      const Resume                                  &resume)
     {
       const unsigned int n_steps = settings.load_steps;
-      for (unsigned int step = 1; step <= n_steps; ++step)
-        on_step(equilibrate(system,
-                            u,
-                            double(step) / n_steps,
-                            double(step - 1) / n_steps,
-                            step,
-                            settings,
-                            time_spent));
+      const unsigned int first =
+        resume.from ? resume.from->get<unsigned int>("driver/next step") : 1;
+      for (unsigned int step = first; step <= n_steps; ++step)
+        {
+          if (step > first && resume.boundary)
+            resume.boundary([step](StateArchive &state) {
+              state.put("driver/next step", step);
+            });
+          on_step(equilibrate(system,
+                              u,
+                              double(step) / n_steps,
+                              double(step - 1) / n_steps,
+                              step,
+                              settings,
+                              time_spent));
+        }
     }
 
     namespace
@@ -115,11 +125,19 @@ namespace pdfem
         run(Host &host) override
         {
           driver = std::make_unique<StaticDriver>(parameters);
-          driver->run(host.system(),
-                      host.solution(),
-                      [&host](const StepRecord &record) {
-                        host.after_equilibrium(record, false);
-                      });
+          driver->run(
+            host.system(),
+            host.solution(),
+            [&host](const StepRecord &record) {
+              host.after_equilibrium(record, false);
+            },
+            resume_through(host));
+        }
+
+        bool
+        resumable() const override
+        {
+          return true;
         }
 
         bool

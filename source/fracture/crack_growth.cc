@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/state_archive.h>
 #include <pdfem/fracture/crack_growth.h>
 #include <pdfem/pd/families.h>
 
@@ -244,6 +245,36 @@ namespace pdfem
     {
       impl->integral =
         std::make_unique<InteractionIntegral<dim>>(system, impl->material);
+    }
+
+    template <int dim>
+    void
+    CrackGrowth<dim>::save_state(StateArchive &state) const
+    {
+      const Impl &s = *impl;
+      state.put("cracks/paths", s.paths.size());
+      for (std::size_t p = 0; p < s.paths.size(); ++p)
+        state.put("cracks/path " + std::to_string(p), s.paths[p]);
+      state.put("cracks/tips", s.tips);
+      state.put("cracks/segments", s.segments);
+      state.put("cracks/virtual cracks", s.virtual_cracks);
+      state.put("cracks/fronts", s.fronts);
+    }
+
+    template <int dim>
+    void
+    CrackGrowth<dim>::load_state(const StateArchive &state)
+    {
+      Impl &s = *impl;
+      s.paths.resize(state.get<std::size_t>("cracks/paths"));
+      for (std::size_t p = 0; p < s.paths.size(); ++p)
+        s.paths[p] =
+          state.get_vector<Point<dim>>("cracks/path " + std::to_string(p));
+      s.tips     = state.get_vector<Tip<dim>>("cracks/tips");
+      s.segments = state.get_vector<Mesh::Crack<dim>>("cracks/segments");
+      s.virtual_cracks =
+        state.get_vector<Mesh::Crack<dim>>("cracks/virtual cracks");
+      s.fronts = state.get_vector<Front<dim>>("cracks/fronts");
     }
 
     template <int dim>

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/state_archive.h>
 #include <pdfem/io/atomic_file.h>
 #include <pdfem/io/field_output.h>
 
@@ -379,6 +380,45 @@ namespace pdfem
             out << "," << r.damage[k] << "," << int(r.kind[k]) << "\n";
           }
       });
+    }
+
+    template <int dim>
+    void
+    FieldOutput<dim>::save_state(StateArchive &state)
+    {
+      finish();
+      std::vector<double> times;
+      std::string         names;
+      for (const auto &[time, name] : records)
+        {
+          times.push_back(time);
+          names += name + "\n";
+        }
+      state.put("fields/counter", counter);
+      state.put("fields/times", times);
+      state.put("fields/names", names);
+    }
+
+    template <int dim>
+    void
+    FieldOutput<dim>::load_state(const StateArchive &state)
+    {
+      counter                 = state.get<unsigned int>("fields/counter");
+      const auto        times = state.get_vector<double>("fields/times");
+      const std::string names = state.get_text("fields/names");
+      records.clear();
+      std::size_t from = 0;
+      for (const double time : times)
+        {
+          const std::size_t end = names.find('\n', from);
+          if (end == std::string::npos)
+            throw InputError(
+              "",
+              "--restart",
+              "the checkpoint's list of field outputs is cut short");
+          records.emplace_back(time, names.substr(from, end - from));
+          from = end + 1;
+        }
     }
 
 #define INSTANTIATE(dim) template class FieldOutput<dim>;

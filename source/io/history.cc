@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <pdfem/io/atomic_file.h>
 #include <pdfem/io/history.h>
 
 #include <cctype>
@@ -26,9 +27,47 @@ namespace pdfem
       out << std::endl;
     }
 
+    History::History(const std::string              &file,
+                     const std::vector<std::string> &columns,
+                     const bool                      active,
+                     const std::size_t               rows)
+      : n_columns(columns.size())
+      , n_rows(rows)
+      , columns(columns)
+    {
+      if (!active)
+        return;
+      std::ifstream            in(file);
+      std::vector<std::string> lines;
+      for (std::string line; lines.size() < rows + 1 && std::getline(in, line);)
+        lines.push_back(line);
+      std::string header;
+      for (std::size_t c = 0; c < columns.size(); ++c)
+        header += (c ? "," : "") + columns[c];
+      if (lines.empty() || lines[0] != header)
+        throw std::runtime_error(file + " is missing or has other columns "
+                                        "than this run writes");
+      if (lines.size() < rows + 1)
+        throw std::runtime_error(
+          file + " has " + std::to_string(lines.size() - 1) +
+          " rows, fewer than the " + std::to_string(rows) +
+          " the checkpoint was taken after");
+      in.close();
+      const std::string error = write_atomically(file, [&](std::ostream &o) {
+        for (const auto &line : lines)
+          o << line << '\n';
+      });
+      if (!error.empty())
+        throw std::runtime_error(error);
+      out.open(file, std::ios::app);
+      if (!out)
+        throw std::runtime_error("cannot write " + file);
+    }
+
     bool
     History::add_row(const std::vector<double> &values)
     {
+      ++n_rows; // on every rank, so that each one's checkpoint agrees
       if (!out.is_open())
         return true;
       out << std::setprecision(std::numeric_limits<double>::max_digits10);

@@ -510,6 +510,19 @@ namespace pdfem
                         "false",
                         Bool(),
                         "Print a table of wall times per phase at the end.");
+      prm.declare_entry(
+        "Checkpoint steps",
+        "0",
+        Integer(0),
+        "Write a checkpoint (the folder 'checkpoint' in the output folder) "
+        "every this many steps; 0: not by count. SIGINT and SIGTERM write one "
+        "too. 'pdfem scene.prm --restart <output folder>' goes on from it. "
+        "Static, quasi-static and explicit drivers.");
+      prm.declare_entry("Checkpoint minutes",
+                        "0",
+                        Double(0.),
+                        "Write a checkpoint when this many minutes of wall "
+                        "time passed since the last one; 0: not by time.");
       prm.leave_subsection();
     }
 
@@ -517,12 +530,14 @@ namespace pdfem
     Output::parse(ParameterHandler &prm, const std::string &)
     {
       prm.enter_subsection("Output");
-      directory       = trim(prm.get("Directory"));
-      write_vtu       = prm.get_bool("Write vtu");
-      write_every     = prm.get_integer("Write every");
-      write_nodes_csv = prm.get_bool("Write nodes csv");
-      print_timings   = prm.get_bool("Print timings");
-      patch_test      = prm.get("Patch test");
+      directory          = trim(prm.get("Directory"));
+      write_vtu          = prm.get_bool("Write vtu");
+      write_every        = prm.get_integer("Write every");
+      write_nodes_csv    = prm.get_bool("Write nodes csv");
+      print_timings      = prm.get_bool("Print timings");
+      patch_test         = prm.get("Patch test");
+      checkpoint_steps   = prm.get_integer("Checkpoint steps");
+      checkpoint_minutes = prm.get_double("Checkpoint minutes");
       prm.leave_subsection();
     }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The `energy balance` postprocessor of dynamic runs.
 #include <pdfem/base/json_writer.h>
+#include <pdfem/base/state_archive.h>
 #include <pdfem/simulator/postprocess.h>
 
 #include <deal.II/lac/trilinos_vector.h>
@@ -91,6 +92,20 @@ namespace pdfem
           json.value("energy_drift", r.energy_drift);
           json.value("max_abs_energy_drift", max_abs_drift);
           json.end_object();
+        }
+
+        void
+        save_state(StateArchive &state) override
+        {
+          state.put("energy balance/max abs error", max_abs_error);
+          state.put("energy balance/max abs drift", max_abs_drift);
+        }
+
+        void
+        load_state(const StateArchive &state) override
+        {
+          max_abs_error = state.get<double>("energy balance/max abs error");
+          max_abs_drift = state.get<double>("energy balance/max abs drift");
         }
 
       private:

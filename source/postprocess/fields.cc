@@ -47,6 +47,18 @@ namespace pdfem
           output->finish();
         }
 
+        void
+        save_state(StateArchive &state) override
+        {
+          output->save_state(state);
+        }
+
+        void
+        load_state(const StateArchive &state) override
+        {
+          output->load_state(state);
+        }
+
       private:
         std::unique_ptr<IO::FieldOutput<dim>> output;
       };

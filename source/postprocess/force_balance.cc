@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The `force balance` postprocessor: do the internal forces sum to zero?
 #include <pdfem/base/json_writer.h>
+#include <pdfem/base/state_archive.h>
 #include <pdfem/coupling/coupled_system.h>
 #include <pdfem/simulator/postprocess.h>
 
@@ -74,6 +75,22 @@ namespace pdfem
           json.value("self_balanced_load", self_balanced);
           json.value("supports_carry_load", warned);
           json.end_object();
+        }
+
+        void
+        save_state(StateArchive &state) override
+        {
+          state.put("force balance/max imbalance", max_imbalance);
+          state.put("force balance/self balanced", self_balanced);
+          state.put("force balance/warned", warned);
+        }
+
+        void
+        load_state(const StateArchive &state) override
+        {
+          max_imbalance = state.get<double>("force balance/max imbalance");
+          self_balanced = state.get<bool>("force balance/self balanced");
+          warned        = state.get<bool>("force balance/warned");
         }
 
       private:

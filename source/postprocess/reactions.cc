@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The `reactions` postprocessor: support reactions per Dirichlet set.
+#include <pdfem/base/exceptions.h>
 #include <pdfem/base/json_writer.h>
+#include <pdfem/base/state_archive.h>
 #include <pdfem/io/history.h>
 #include <pdfem/simulator/postprocess.h>
 #include <pdfem/simulator/summary.h>
@@ -102,6 +104,28 @@ namespace pdfem
               json.end_object();
             }
           json.end_object();
+        }
+
+        void
+        save_state(StateArchive &state) override
+        {
+          state.put("reactions/peaks", peaks);
+        }
+
+        void
+        load_state(const StateArchive &state) override
+        {
+          const auto saved =
+            state.get_vector<std::array<Peak, dim>>("reactions/peaks");
+          if (saved.size() == peaks.size())
+            peaks = saved;
+          else
+            throw InputError("",
+                             "--restart",
+                             "the checkpoint has peaks of " +
+                               std::to_string(saved.size()) +
+                               " support sets, this run " +
+                               std::to_string(peaks.size()));
         }
 
       private:

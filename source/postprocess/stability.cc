@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The `stability` postprocessor of runs with a nonlinear PD model.
 #include <pdfem/base/json_writer.h>
+#include <pdfem/base/state_archive.h>
 #include <pdfem/simulator/postprocess.h>
 
 #include <algorithm>
@@ -72,6 +73,18 @@ namespace pdfem
                          outcome->last_check.smallest_relative_pivot);
             }
           json.end_object();
+        }
+
+        void
+        save_state(StateArchive &state) override
+        {
+          state.put("stability/peak load", peak_load);
+        }
+
+        void
+        load_state(const StateArchive &state) override
+        {
+          peak_load = state.get<double>("stability/peak load");
         }
 
       private:

@@ -284,9 +284,14 @@ namespace pdfem
                            plane_stress ? "-1 < nu <= 0.5" : "-1 < nu < 0.5");
 
         // ---- output folder
-        setup.out_dir = options.output_directory.empty() ?
-                          "output-" + setup.name :
-                          options.output_directory;
+        const std::string restart_folder =
+          options.restart.empty() ? "" :
+                                    checkpoint_output_folder(options.restart);
+        setup.out_dir      = !options.output_directory.empty() ?
+                               options.output_directory :
+                             !restart_folder.empty() ? restart_folder :
+                                                       "output-" + setup.name;
+        setup.restart_from = options.restart;
         make_output_folder(setup.out_dir, cmd, "output folder", comm);
 
         // ---- cells: vertex index = node id - 1, material id = element type

@@ -183,13 +183,22 @@ namespace pdfem
         setup.write_every = prm.output.write_every;
         setup.fracture    = prm.fracture;
 
-        setup.write_nodes_csv = prm.output.write_nodes_csv;
-        setup.print_timings   = prm.output.print_timings;
-        setup.patch_test      = prm.output.patch_test;
-        auto &timings         = setup.timings;
+        setup.write_nodes_csv    = prm.output.write_nodes_csv;
+        setup.print_timings      = prm.output.print_timings;
+        setup.patch_test         = prm.output.patch_test;
+        setup.checkpoint_steps   = prm.output.checkpoint_steps;
+        setup.checkpoint_minutes = prm.output.checkpoint_minutes;
+        setup.restart_from       = options.restart;
+        auto &timings            = setup.timings;
 
         // ---- output folder
+        // A restart without a checkpoint stops here, before any work.
+        const std::string restart_folder =
+          options.restart.empty() ? "" :
+                                    checkpoint_output_folder(options.restart);
         std::string out_dir = options.output_directory;
+        if (out_dir.empty())
+          out_dir = restart_folder;
         if (out_dir.empty())
           out_dir = prm.output.directory.empty() ?
                       "output-" + prm.name :

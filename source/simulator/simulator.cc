@@ -187,6 +187,8 @@ namespace pdfem
         std::cerr << "pdfem: note: " << note << std::endl;
 
     auto &tria = *setup.tria;
+    if (!setup.restart_from.empty())
+      read_restart(); // the PD region as it had grown
     if (setup.cell_is_pd.empty())
       setup.cell_is_pd.assign(tria.n_active_cells(), false);
     // A scene may start with PD only around its cracks.
@@ -253,10 +255,14 @@ namespace pdfem
       for (const auto &c : p->history_columns())
         columns.push_back(c);
     columns.push_back("wall_seconds");
+    last_checkpoint_time = clock::now();
+    if (restart)
+      resume_from_checkpoint(columns);
     // From here on the run writes: the outputs an earlier run left in the
-    // folder go first (so that none is taken for this run's), and a killed
-    // run leaves summary.json saying it did not end.
-    if (root)
+    // folder go first (so that none is taken for this run's; a restart
+    // keeps them: it continues that run), and a killed run leaves
+    // summary.json saying it did not end.
+    if (root && !restart)
       remove_earlier_outputs(setup.out_dir);
     const std::string marker_error =
       Utilities::MPI::broadcast(comm, write_running_marker(), 0);
@@ -266,9 +272,10 @@ namespace pdfem
                        marker_error,
                        "a writable folder with free space");
 
-    history = std::make_unique<IO::History>(setup.out_dir + "/history.csv",
-                                            columns,
-                                            root);
+    if (!restart)
+      history = std::make_unique<IO::History>(setup.out_dir + "/history.csv",
+                                              columns,
+                                              root);
   }
 
   template <int dim>
@@ -281,6 +288,7 @@ namespace pdfem
     for (const auto &p : postprocessors)
       p->history_values(row);
     row.push_back(seconds_since(setup.total_start));
+    last_row_step = static_cast<unsigned int>(base[0]);
     // No NaN is written: a non-finite value ends the run (the same on
     // every rank: the row's values are global).
     for (std::size_t c = 0; c < row.size(); ++c)
@@ -408,7 +416,10 @@ namespace pdfem
                     << " PD nodes of fragments cut loose are held where "
                        "they are\n";
       }
-    stop_if_interrupted(StopOnSignals::stop_requested(comm));
+    // A resumable driver stops at its next step boundary, after a
+    // checkpoint (step_boundary()).
+    if (!driver->resumable())
+      stop_if_interrupted(StopOnSignals::stop_requested(comm));
     return check;
   }
 
@@ -504,26 +515,14 @@ namespace pdfem
                          " s: check the loads, the initial velocity and the "
                          "time step");
     // An interrupted run records the step it stops at.
-    const int  stop      = StopOnSignals::stop_requested(comm);
+    const int stop =
+      driver->resumable() ? 0 : StopOnSignals::stop_requested(comm);
     const bool last_step = record.step >= n_total_steps || stop != 0;
     if (record.step % prm.history_interval != 0 && !last_step &&
         !(record.energy_error > prm.energy_tolerance) &&
         std::isfinite(record.energy_error))
       return;
-    // Reactions of the supports (f_int - f_ext over each set) from the
-    // forces the integrator evaluated last (at this u and t).
-    if (!coupled->reaction_names().empty())
-      coupled->update_reactions();
-    const Coupling::ProblemSize s = coupled->size();
-    add_history_row({double(record.step),
-                     record.time,
-                     record.time / prm.end_time,
-                     0.,
-                     double(record.linear_iterations),
-                     0.,
-                     double(s.n_broken_bonds),
-                     coupled->max_damage()});
-    print_dynamic_progress(record, s.n_broken_bonds);
+    write_time_step_row(record);
     stop_if_interrupted(stop);
   }
 
@@ -576,6 +575,7 @@ namespace pdfem
     // The driver's validated parameters (time step, monitor points parsed)
     // are the run's.
     s.setup.driver = s.driver->settings();
+    s.check_checkpoint_settings();
   }
 
   template <int dim>

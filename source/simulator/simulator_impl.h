@@ -4,6 +4,7 @@
 #ifndef PDFEM_SOURCE_SIMULATOR_SIMULATOR_IMPL_H
 #define PDFEM_SOURCE_SIMULATOR_SIMULATOR_IMPL_H
 
+#include <pdfem/base/state_archive.h>
 #include <pdfem/io/history.h>
 #include <pdfem/simulator/postprocess.h>
 #include <pdfem/simulator/simulator.h>
@@ -107,6 +108,16 @@ namespace pdfem
                     double                                  t) override;
     void
     record_time_step(const Drivers::DynamicRecord &record) override;
+    void
+    step_boundary(const Drivers::SaveState &save) override;
+    /// A history row (and progress line) of the time step @p record.
+    void
+    write_time_step_row(const Drivers::DynamicRecord &record);
+    const StateArchive *
+    restart_state() const override
+    {
+      return restart.get();
+    }
 
     // ---- the run (simulator.cc)
     /// The coupled system, the cracks, the postprocessors, the history.
@@ -126,6 +137,24 @@ namespace pdfem
     /// Field output through the postprocessors.
     void
     write_fields(double t);
+
+    // ---- checkpoint and restart (simulator_checkpoint.cc)
+    /// Check the checkpoint settings against the driver (InputError).
+    void
+    check_checkpoint_settings() const;
+    /// Read this rank's part of the checkpoint to restart from, check it
+    /// against the run and take the PD region from it (before the system
+    /// is built).
+    void
+    read_restart();
+    /// Take the rest of the state from it (system, cracks, solution,
+    /// postprocessors, counters) and continue history.csv (@p columns)
+    /// after the rows it had then.
+    void
+    resume_from_checkpoint(const std::vector<std::string> &columns);
+    /// Write a checkpoint of the run, the driver's part from @p save.
+    void
+    write_checkpoint(const Drivers::SaveState &save);
 
     // ---- outputs (simulator_output.cc)
     void
@@ -186,7 +215,14 @@ namespace pdfem
     double                                criterion_time = 0.;
     double                                output_time    = 0.;
     std::string                           exit_state     = "completed";
-    std::string                           message;
+    /// The checkpoint restarted from (nullptr: a fresh run).
+    std::unique_ptr<StateArchive>         restart;
+    unsigned int                          last_checkpoint_step = 0;
+    std::chrono::steady_clock::time_point last_checkpoint_time;
+    unsigned int                          n_checkpoints = 0;
+    /// The step of the last history row.
+    unsigned int last_row_step = 0;
+    std::string  message;
   };
 } // namespace pdfem
 

@@ -198,6 +198,27 @@ namespace pdfem
                   << seconds << " s" << std::defaultfloat << std::endl;
   }
 
+  template <int dim>
+  void
+  Simulator<dim>::Impl::write_time_step_row(
+    const Drivers::DynamicRecord &record)
+  {
+    // Reactions of the supports (f_int - f_ext over each set) from the
+    // forces the integrator evaluated last (at this u and t).
+    if (!coupled->reaction_names().empty())
+      coupled->update_reactions();
+    const Coupling::ProblemSize s = coupled->size();
+    add_history_row({double(record.step),
+                     record.time,
+                     record.time / setup.driver.end_time,
+                     0.,
+                     double(record.linear_iterations),
+                     0.,
+                     double(s.n_broken_bonds),
+                     coupled->max_damage()});
+    print_dynamic_progress(record, s.n_broken_bonds);
+  }
+
 #define INSTANTIATE(dim)                                                   \
   template void Simulator<dim>::Impl::print_header() const;                \
   template void Simulator<dim>::Impl::print_static_progress(               \
@@ -206,7 +227,9 @@ namespace pdfem
     const Drivers::DynamicRecord &, unsigned long) const;                  \
   template std::string Simulator<dim>::Impl::write_summary() const;        \
   template std::string Simulator<dim>::Impl::write_running_marker() const; \
-  template void        Simulator<dim>::Impl::print_end() const;
+  template void        Simulator<dim>::Impl::print_end() const;            \
+  template void        Simulator<dim>::Impl::write_time_step_row(          \
+    const Drivers::DynamicRecord &);
   PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
 } // namespace pdfem

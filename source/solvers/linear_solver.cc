@@ -180,6 +180,16 @@ namespace pdfem
     }
 
     void
+    LinearSolver::forget_preconditioner()
+    {
+      amg.reset();
+      amg_matrix           = nullptr;
+      amg_stale            = false;
+      amg_fresh_iterations = 0;
+      last_iterations      = 0;
+    }
+
+    void
     LinearSolver::record_matrix_amg(const bool         rebuilt,
                                     const unsigned int iterations)
     {

@@ -43,6 +43,7 @@ namespace dealii
 
 namespace pdfem
 {
+  class StateArchive;
   namespace PD
   {
     struct Families;
@@ -451,6 +452,31 @@ namespace pdfem
        */
       unsigned long
       hold_fragments(unsigned int min_nodes);
+
+      /**
+       * Put what broke bonds and held fragments since construction, in
+       * order (break_bonds(), break_bonds_if(), hold_fragments()), into a
+       * checkpoint.
+       */
+      void
+      save_fracture_state(StateArchive &state) const;
+
+      /**
+       * Replay what save_fracture_state() put, on a system built as the
+       * saved one was (same mesh, PD region, settings, number of ranks)
+       * whose bonds have not changed yet: the same bonds break in the same
+       * order, so that the condensed stiffness of the energy form and every
+       * force come out the same to the bit. Collective.
+       */
+      void
+      restore_fracture_state(const StateArchive &state);
+
+      /// The linear solver's kept preconditioner is built afresh at the
+      /// next solve (Solvers::LinearSolver::forget_preconditioner()), from
+      /// an auxiliary matrix assembled whole: what a system rebuilt on
+      /// restart does.
+      void
+      forget_preconditioner();
 
       /**
        * The rigid motions the prescribed displacements leave free, one

@@ -3,6 +3,7 @@
 #define PDFEM_DRIVERS_CENTRAL_DIFFERENCE_H
 
 #include <pdfem/drivers/dynamics.h>
+#include <pdfem/drivers/resume.h>
 #include <pdfem/drivers/settings.h>
 
 namespace pdfem
@@ -38,14 +39,17 @@ namespace pdfem
        * Integrate from t = 0 (u = @p u with the prescribed values at t = 0,
        * v = @p v0 on the free DoFs) to the end time. @p on_step is called
        * after step 0 and every step; @p after_step (if given) after every
-       * step, before on_step.
+       * step, before on_step. With @p resume, it goes on from a
+       * checkpoint's state (time step and estimate kept, no power
+       * iteration) and offers its state between steps.
        */
       void
       run(DynamicSystemInterface        &system,
           SystemInterface::Vector       &u,
           const SystemInterface::Vector &v0,
           const OnStep                  &on_step,
-          const AfterStep               &after_step = {});
+          const AfterStep               &after_step = {},
+          const Resume                  &resume     = {});
 
       /// The step used (after run() started).
       double
@@ -70,6 +74,11 @@ namespace pdfem
       }
 
     private:
+      /// dt from the settings and the estimate; refuses a given step above
+      /// the critical one (RunFailure "time step too large").
+      void
+      check_time_step();
+
       Settings          settings;
       double            dt = 0.;
       StabilityEstimate estimate;

@@ -6,6 +6,7 @@
 #include <pdfem/drivers/dynamics.h>
 #include <pdfem/drivers/newton_driver.h>
 #include <pdfem/drivers/quasi_static_driver.h>
+#include <pdfem/drivers/resume.h>
 #include <pdfem/drivers/settings.h>
 #include <pdfem/drivers/static_driver.h>
 
@@ -93,7 +94,41 @@ namespace pdfem
       /// Dynamic runs: a time step is complete (history, progress).
       virtual void
       record_time_step(const DynamicRecord &record) = 0;
+
+      /**
+       * Between two steps of a resumable driver (Interface::resumable()):
+       * @p save puts the driver's state into an archive. The host writes a
+       * checkpoint of the whole run when one is due, and ends the run here
+       * (RunFailure "interrupted", after the checkpoint) when a signal
+       * asked it to.
+       */
+      virtual void
+      step_boundary(const SaveState &save)
+      {
+        (void)save;
+      }
+
+      /// The driver's state in the checkpoint this run restarts from
+      /// (nullptr: a fresh start).
+      virtual const StateArchive *
+      restart_state() const
+      {
+        return nullptr;
+      }
     };
+
+    /// The Resume of a driver loop that @p host runs: its restart state and
+    /// its step boundaries.
+    inline Resume
+    resume_through(Host &host)
+    {
+      Resume resume;
+      resume.from     = host.restart_state();
+      resume.boundary = [&host](const SaveState &save) {
+        host.step_boundary(save);
+      };
+      return resume;
+    }
 
     /** What a driver may check of the rest of a run before it starts. */
     struct RunTraits
@@ -161,6 +196,17 @@ namespace pdfem
       /// Does the driver integrate in time (history rows are time steps)?
       virtual bool
       dynamic() const
+      {
+        return false;
+      }
+
+      /**
+       * Can a run of this driver be checkpointed and restarted
+       * (Host::step_boundary(), Host::restart_state())? Its loop state
+       * between two steps must then be complete in what it saves.
+       */
+      virtual bool
+      resumable() const
       {
         return false;
       }

@@ -52,7 +52,8 @@ namespace pdfem
       void
       run(const std::function<SystemInterface &()>             &system,
           SystemInterface::Vector                              &u,
-          const std::function<GrowthCheck(const StepRecord &)> &after_step);
+          const std::function<GrowthCheck(const StepRecord &)> &after_step,
+          const Resume                                         &resume = {});
 
       const DriverTimings &
       timings() const

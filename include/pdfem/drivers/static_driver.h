@@ -2,6 +2,7 @@
 #ifndef PDFEM_DRIVERS_STATIC_DRIVER_H
 #define PDFEM_DRIVERS_STATIC_DRIVER_H
 
+#include <pdfem/drivers/resume.h>
 #include <pdfem/drivers/settings.h>
 #include <pdfem/drivers/system_interface.h>
 
@@ -74,7 +75,8 @@ namespace pdfem
       void
       run(SystemInterface                               &system,
           SystemInterface::Vector                       &u,
-          const std::function<void(const StepRecord &)> &on_step);
+          const std::function<void(const StepRecord &)> &on_step,
+          const Resume                                  &resume = {});
 
       const DriverTimings &
       timings() const

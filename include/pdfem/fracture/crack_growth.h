@@ -22,6 +22,8 @@ namespace dealii
 
 namespace pdfem
 {
+  class StateArchive;
+
   namespace Fracture
   {
     /**
@@ -157,6 +159,14 @@ namespace pdfem
       /// Re-attach to a rebuilt system (same mesh, another PD region).
       void
       attach(const Coupling::CoupledSystem<dim> &system);
+
+      /// Put the paths, tips, segments and fronts into a checkpoint.
+      void
+      save_state(StateArchive &state) const;
+
+      /// Take them back from a checkpoint (restart).
+      void
+      load_state(const StateArchive &state);
 
       const std::vector<Tip<dim>> &
       tips() const;

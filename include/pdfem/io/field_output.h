@@ -12,6 +12,8 @@
 
 namespace pdfem
 {
+  class StateArchive;
+
   namespace IO
   {
     namespace internal
@@ -54,6 +56,14 @@ namespace pdfem
       /// could not be written on any rank throws RunFailure "io error".
       void
       finish();
+      /// finish(), then put the outputs written so far (counter, the
+      /// solution.pvd list) into a checkpoint. Collective.
+      void
+      save_state(StateArchive &state);
+      /// Take them back on restart: later outputs continue the numbering
+      /// and solution.pvd lists the earlier ones.
+      void
+      load_state(const StateArchive &state);
 
       /// nodes.csv: every node (sorted by coordinates) with displacement
       /// and stress, independent of the number of ranks. Written whole or

@@ -23,6 +23,24 @@ namespace pdfem
               const std::vector<std::string> &columns,
               bool                            active);
 
+      /**
+       * Continue @p file after its first @p rows rows (a restart from a
+       * checkpoint taken then): the rows a killed run wrote after it are
+       * dropped, and new rows are appended. Throws std::runtime_error if
+       * the file's header is not @p columns or it has fewer rows.
+       */
+      History(const std::string              &file,
+              const std::vector<std::string> &columns,
+              bool                            active,
+              std::size_t                     rows);
+
+      /// The rows written to the file (including those kept on restart).
+      std::size_t
+      rows() const
+      {
+        return n_rows;
+      }
+
       /// The name of column @p c.
       const std::string &
       column(std::size_t c) const
@@ -42,6 +60,7 @@ namespace pdfem
     private:
       std::ofstream            out;
       std::size_t              n_columns;
+      std::size_t              n_rows = 0;
       std::vector<std::string> columns;
     };
   } // namespace IO

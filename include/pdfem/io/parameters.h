@@ -156,11 +156,13 @@ namespace pdfem
     struct Output
     {
       std::string  directory; // empty: "output-<scene name>"
-      bool         write_vtu       = true;
-      unsigned int write_every     = 0; // VTU every n steps; 0: last only
-      bool         write_nodes_csv = false;
-      bool         print_timings   = false;
-      std::string  patch_test      = "auto"; // auto|true|false
+      bool         write_vtu          = true;
+      unsigned int write_every        = 0; // VTU every n steps; 0: last only
+      bool         write_nodes_csv    = false;
+      bool         print_timings      = false;
+      std::string  patch_test         = "auto"; // auto|true|false
+      unsigned int checkpoint_steps   = 0;      // 0: not by count
+      double       checkpoint_minutes = 0.;     // 0: not by time
 
       static void
       declare(dealii::ParameterHandler &prm);

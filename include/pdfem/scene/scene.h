@@ -21,6 +21,9 @@ namespace pdfem
       bool quiet = false;
       /// Parameter overrides ("Section/Entry", "value") from `--set`.
       std::vector<std::pair<std::string, std::string>> overrides;
+      /// `--restart`: go on from the checkpoint in this output folder
+      /// (which is then the output folder, unless --output names it).
+      std::string restart;
     };
 
     /** Exit codes of a run (also the `pdfem` process exit status). */

@@ -12,10 +12,11 @@
 
 namespace pdfem
 {
+  class StateArchive;
   namespace IO
   {
     class JsonWriter;
-  }
+  } // namespace IO
 
   /**
    * Postprocessors: what a run writes besides the solution itself. Each
@@ -88,6 +89,23 @@ namespace pdfem
       write_sections(IO::JsonWriter &json) const
       {
         (void)json;
+      }
+
+      /// Put what this postprocessor carries from step to step (peaks,
+      /// files written so far) into a checkpoint, under a prefix of its own;
+      /// files it writes in the background are complete on return.
+      /// Collective.
+      virtual void
+      save_state(StateArchive &state)
+      {
+        (void)state;
+      }
+
+      /// Take it back on restart (after initialize()).
+      virtual void
+      load_state(const StateArchive &state)
+      {
+        (void)state;
       }
     };
 

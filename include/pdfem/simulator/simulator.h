@@ -73,6 +73,15 @@ namespace pdfem
     /// The coupling's patch test before the run: "auto" (pairwise PD
     /// models with FE cells), "true" or "false".
     std::string patch_test = "auto";
+    /// Checkpoints (doc/reliability.md): every this many steps (0: not by
+    /// count) and every this many minutes of wall time (0: not by time);
+    /// SIGINT and SIGTERM write one too. Drivers that can resume only
+    /// (Drivers::Interface::resumable()).
+    unsigned int checkpoint_steps   = 0;
+    double       checkpoint_minutes = 0.;
+    /// Go on from the checkpoint in this folder (the output folder of the
+    /// interrupted run, or its `checkpoint` folder); empty: a fresh run.
+    std::string restart_from;
     /// Dirichlet sets whose reactions are also summed as "RF".
     std::vector<unsigned int> reaction_group;
     /// Remarks printed on stderr before the run.
@@ -153,6 +162,14 @@ namespace pdfem
                dealii::ParameterHandler *parameters,
                double                    density,
                const Solvers::Settings  &linear_solver);
+
+  /**
+   * The output folder that the checkpoint @p restart_path (an output
+   * folder, or the `checkpoint` folder in one) belongs to. InputError if
+   * there is no checkpoint there.
+   */
+  std::string
+  checkpoint_output_folder(const std::string &restart_path);
 
   /**
    * One run of the coupled PD-FE method (in the spirit of ASPECT's

@@ -86,6 +86,16 @@ namespace pdfem
         amg_stale = true;
       }
 
+      /**
+       * Forget the AMG hierarchy kept from earlier solves and its
+       * iteration counts: the next solve builds one from the matrix as it
+       * is then, as a run restarted from a checkpoint does. A checkpoint
+       * calls it, so that the restarted run repeats the uninterrupted one
+       * to the bit.
+       */
+      void
+      forget_preconditioner();
+
     private:
       /// Build the ML hierarchy of the assembled @p K (symmetric smoothed
       /// aggregation for CG) unless the one kept is still good; returns
