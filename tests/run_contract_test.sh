@@ -60,7 +60,11 @@ for _ in $(seq 1 1200); do
   kill -0 $pid 2> /dev/null || break
   sleep 0.1
 done
-rm -rf "$out"
+# (a file the run creates while rm -rf empties the folder keeps the folder: remove until it is gone)
+for _ in $(seq 1 100); do
+  rm -rf "$out" 2> /dev/null
+  [ -e "$out" ] || break
+done
 wait $pid
 rc=$?
 cat "$work/removed.log"
