@@ -331,20 +331,7 @@ namespace pdfem
         void
         run(Host &host) override
         {
-          integrator = std::make_unique<CentralDifference>(parameters);
-          SystemInterface::Vector v0;
-          host.initial_velocity(v0);
-          integrator->run(
-            host.dynamic_system(),
-            host.solution(),
-            v0,
-            [&host](const DynamicRecord &record) {
-              host.record_time_step(record);
-            },
-            [&host](const SystemInterface::Vector &u, const double t) {
-              return host.after_time_step(u, t);
-            },
-            resume_through(host));
+          integrate(host, resume_through(host));
         }
 
         std::string

@@ -72,6 +72,17 @@ namespace pdfem
       void
       run(Host &host) override
       {
+        integrate(host);
+      }
+
+    protected:
+      /// Make the integrator and run it over the host's system, from the
+      /// host's initial velocity; @p extra (a Drivers::Resume, for an
+      /// integrator that can resume) goes on to Integrator::run.
+      template <class... Extra>
+      void
+      integrate(Host &host, const Extra &...extra)
+      {
         integrator = std::make_unique<Integrator>(parameters);
         SystemInterface::Vector v0;
         host.initial_velocity(v0);
@@ -84,10 +95,10 @@ namespace pdfem
           },
           [&host](const SystemInterface::Vector &u, const double t) {
             return host.after_time_step(u, t);
-          });
+          },
+          extra...);
       }
 
-    protected:
       std::unique_ptr<Integrator> integrator;
     };
   } // namespace Drivers

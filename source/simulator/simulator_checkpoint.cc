@@ -47,7 +47,7 @@ namespace pdfem
 
     /// The checkpoint folder @p path names: itself if it holds a rank
     /// file, else its `checkpoint` folder, else `checkpoint.old` (left by a
-    /// run killed while it replaced the checkpoint); empty if none.
+    /// run killed while it replaced the checkpoint). InputError if none.
     std::string
     locate_checkpoint(const std::string &path)
     {
@@ -55,7 +55,11 @@ namespace pdfem
            {path, path + "/checkpoint", path + "/checkpoint.old"})
         if (fs::exists(rank_file(folder, 0)))
           return folder;
-      return "";
+      throw InputError(path,
+                       "--restart",
+                       "no checkpoint there (no rank-0.state in it, in its "
+                       "checkpoint folder or in checkpoint.old)",
+                       "the output folder of a run that wrote a checkpoint");
     }
 
     /**
@@ -68,8 +72,9 @@ namespace pdfem
     void
     kill_if_asked(const char *where, const unsigned int step)
     {
-      const char *asked = std::getenv("PDFEM_TEST_KILL");
-      if (asked != nullptr &&
+      // Read once: this runs at every step boundary.
+      static const char *const asked = std::getenv("PDFEM_TEST_KILL");
+      if (asked != nullptr && *asked != '\0' &&
           std::string(asked) == std::string(where) + ":" + std::to_string(step))
         std::raise(SIGKILL);
     }
@@ -99,12 +104,6 @@ namespace pdfem
   checkpoint_output_folder(const std::string &restart_path)
   {
     const std::string folder = locate_checkpoint(restart_path);
-    if (folder.empty())
-      throw InputError(restart_path,
-                       "--restart",
-                       "no checkpoint there (no rank-0.state in it, in its "
-                       "checkpoint folder or in checkpoint.old)",
-                       "the output folder of a run that wrote a checkpoint");
     return folder == restart_path ?
              fs::path(folder).lexically_normal().parent_path().string() :
              restart_path;
@@ -136,13 +135,7 @@ namespace pdfem
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
     on_every_rank(comm, [&]() {
       const std::string folder = locate_checkpoint(setup.restart_from);
-      if (folder.empty())
-        throw InputError(setup.restart_from,
-                         "--restart",
-                         "no checkpoint there (no rank-0.state in it, in its "
-                         "checkpoint folder or in checkpoint.old)",
-                         "the output folder of a run that wrote a checkpoint");
-      std::error_code ec;
+      std::error_code   ec;
       if (!fs::equivalent(fs::path(folder).parent_path(), setup.out_dir, ec))
         throw InputError(folder,
                          "--restart",
