@@ -2,6 +2,9 @@
 #include <pdfem/base/mpi_startup.h>
 
 #include <cstdlib>
+#include <string>
+
+#include <unistd.h>
 
 namespace pdfem
 {
@@ -20,5 +23,17 @@ namespace pdfem
     setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
     setenv("OMPI_MCA_pml", "ob1", 0);
     setenv("OMPI_MCA_btl", "self,vader", 0);
+    setenv("OMPI_MCA_orte_top_session_dir",
+           singleton_session_directory().c_str(),
+           0);
+  }
+
+  std::string
+  singleton_session_directory()
+  {
+    const char *tmp = std::getenv("TMPDIR");
+    return std::string(tmp != nullptr && *tmp != '\0' ? tmp : "/tmp") +
+           "/ompi.pdfem." + std::to_string(::getuid()) + "." +
+           std::to_string(::getpid());
   }
 } // namespace pdfem
