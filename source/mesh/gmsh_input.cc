@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/parameter_tools.h>
 #include <pdfem/mesh/gmsh_input.h>
 
 #include <deal.II/grid/grid_in.h>
@@ -112,7 +113,20 @@ namespace pdfem
     {
       dealii::GridIn<dim> grid_in(tria);
       std::ifstream       in(msh_file);
-      grid_in.read_msh(in);
+      try
+        {
+          grid_in.read_msh(in);
+        }
+      catch (const std::exception &e)
+        {
+          throw InputError(msh_file,
+                           "",
+                           "deal.II cannot read the mesh: " +
+                             ParameterTools::clean_dealii_message(e.what()),
+                           "a gmsh ASCII mesh (format 2.2 or 4.1) of "
+                           "dimension " +
+                             std::to_string(dim));
+        }
     }
 
     template <int dim>

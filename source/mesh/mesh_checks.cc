@@ -9,15 +9,17 @@
 #include <deal.II/base/tensor.h>
 
 #include <deal.II/grid/tria.h>
+#include <deal.II/grid/tria_description.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
-#include <unordered_set>
+#include <unordered_map>
 #include <vector>
 
 namespace pdfem
@@ -59,6 +61,14 @@ namespace pdfem
           ++number;
           if (!line.empty() && line.back() == '\r')
             line.pop_back();
+          // A NUL ended a number for strtod but not for deal.II's reader,
+          // which then read the line otherwise than the check (and wrote
+          // past a vector: a fuzzer's find).
+          for (const char c : line)
+            if (static_cast<unsigned char>(c) < 0x20 && c != '\t')
+              fail("a control character (byte " +
+                   std::to_string(static_cast<unsigned char>(c)) +
+                   ") in the text");
           return true;
         }
 
@@ -108,7 +118,7 @@ namespace pdfem
           const unsigned long v = token.empty() || token[0] == '-' ?
                                     0 :
                                     std::strtoul(token.c_str(), &end, 10);
-          if (end == nullptr || *end != '\0' || errno != 0)
+          if (end != token.c_str() + token.size() || errno != 0)
             fail(what + " '" + token + "' is not a non-negative integer");
           return v;
         }
@@ -119,7 +129,8 @@ namespace pdfem
         {
           char        *end = nullptr;
           const double v   = std::strtod(token.c_str(), &end);
-          if (end == token.c_str() || *end != '\0' || !std::isfinite(v))
+          if (token.empty() || end != token.c_str() + token.size() ||
+              !std::isfinite(v))
             fail(what + " '" + token + "' is not a finite number");
           return v;
         }
@@ -139,11 +150,26 @@ namespace pdfem
         [[noreturn]] void
         fail(const std::string &problem) const
         {
+          fail_at(number, problem);
+        }
+
+        /// fail() naming line @p line_number instead of the current one.
+        [[noreturn]] void
+        fail_at(const unsigned long line_number,
+                const std::string  &problem) const
+        {
           throw InputError(file,
-                           "line " + std::to_string(number),
+                           "line " + std::to_string(line_number),
                            problem,
                            "an ASCII gmsh mesh, format 2.2 or 4.1, as gmsh "
                            "writes it");
+        }
+
+        /// The number of the line read last (from 1).
+        unsigned long
+        line_number() const
+        {
+          return number;
         }
 
       private:
@@ -153,24 +179,45 @@ namespace pdfem
         std::vector<std::string> tokens;
       };
 
-      /// The node lines of one element (@p nodes fields from @p first):
-      /// every node in @p node_tags, none twice.
+      /// The nodes of the file: tag -> coordinates.
+      using Nodes = std::unordered_map<unsigned long, std::array<double, 3>>;
+
+      /// A linear cell of the file (triangle, quadrilateral, tetrahedron,
+      /// hexahedron) for the shape check: its gmsh type, tag, nodes in the
+      /// file's order, and line.
+      struct FileCell
+      {
+        unsigned long              type;
+        std::string                tag;
+        std::vector<unsigned long> nodes;
+        unsigned long              line;
+      };
+
+      /// The node fields of one element (from @p first) of gmsh type
+      /// @p type: every node in @p nodes, none twice. Linear cells are
+      /// added to @p cells.
       void
-      check_element_nodes(MshLines                                &lines,
-                          const std::vector<std::string>          &t,
-                          const std::size_t                        first,
-                          const std::unordered_set<unsigned long> &node_tags)
+      check_element_nodes(MshLines                       &lines,
+                          const std::vector<std::string> &t,
+                          const std::size_t               first,
+                          const unsigned long             type,
+                          const Nodes                    &nodes,
+                          std::vector<FileCell>          &cells)
       {
         const std::string element = "element " + t[0];
+        FileCell          cell{type, t[0], {}, lines.line_number()};
         for (std::size_t i = first; i < t.size(); ++i)
           {
             const unsigned long node = lines.integer(t[i], element + ": node");
-            if (node_tags.count(node) == 0)
+            if (nodes.count(node) == 0)
               lines.fail(element + ": node " + t[i] + " is not in $Nodes");
             for (std::size_t j = first; j < i; ++j)
               if (t[j] == t[i])
                 lines.fail(element + " repeats node " + t[i]);
+            cell.nodes.push_back(node);
           }
+        if (type >= 2 && type <= 5)
+          cells.push_back(std::move(cell));
       }
 
       /// The header of a 4.1 section of blocks ($Nodes, $Elements): its
@@ -237,7 +284,7 @@ namespace pdfem
       };
 
       void
-      check_nodes_41(MshLines &lines, std::unordered_set<unsigned long> &tags)
+      check_nodes_41(MshLines &lines, Nodes &nodes)
       {
         const std::string S = "$Nodes";
         BlockedSection    section(lines, S, "node");
@@ -257,24 +304,34 @@ namespace pdfem
                          " and parametric " + t[2] +
                          " (allowed: 0..3 and 0 or 1)");
             section.add_block(m);
+            std::vector<unsigned long> tags;
             for (unsigned long i = 0; i < m; ++i)
               {
                 const std::string t = lines.fields(S, 1, "a node tag")[0];
-                if (!tags.insert(section.tag(t)).second)
+                tags.push_back(section.tag(t));
+                if (!nodes.emplace(tags.back(), std::array<double, 3>()).second)
                   lines.fail("node tag " + t + " twice");
               }
             const std::size_t coordinates = 3 + (parametric ? dim : 0);
             for (unsigned long i = 0; i < m; ++i)
-              for (const auto &x :
-                   lines.fields(S, coordinates, "the node's coordinates"))
-                lines.real(x, "coordinate");
+              {
+                const auto &x =
+                  lines.fields(S, coordinates, "the node's coordinates");
+                for (unsigned int d = 0; d < coordinates; ++d)
+                  {
+                    const double v = lines.real(x[d], "coordinate");
+                    if (d < 3)
+                      nodes[tags[i]][d] = v;
+                  }
+              }
           }
         section.finish();
       }
 
       void
-      check_elements_41(MshLines                                &lines,
-                        const std::unordered_set<unsigned long> &node_tags)
+      check_elements_41(MshLines              &lines,
+                        const Nodes           &nodes,
+                        std::vector<FileCell> &cells)
       {
         const std::string S = "$Elements";
         BlockedSection    section(lines, S, "element");
@@ -302,14 +359,14 @@ namespace pdfem
                                              "an element tag and its " +
                                                std::to_string(k) + " nodes");
                 section.tag(e[0]);
-                check_element_nodes(lines, e, 1, node_tags);
+                check_element_nodes(lines, e, 1, type, nodes, cells);
               }
           }
         section.finish();
       }
 
       void
-      check_nodes_22(MshLines &lines, std::unordered_set<unsigned long> &tags)
+      check_nodes_22(MshLines &lines, Nodes &nodes)
       {
         const std::string   S = "$Nodes";
         const unsigned long n =
@@ -317,18 +374,20 @@ namespace pdfem
                         "number of nodes");
         for (unsigned long i = 0; i < n; ++i)
           {
-            const auto &t = lines.fields(S, 4, "a node: tag x y z");
-            if (!tags.insert(lines.integer(t[0], "node tag")).second)
+            const auto           &t = lines.fields(S, 4, "a node: tag x y z");
+            std::array<double, 3> x;
+            for (unsigned int d = 0; d < 3; ++d)
+              x[d] = lines.real(t[d + 1], "coordinate");
+            if (!nodes.emplace(lines.integer(t[0], "node tag"), x).second)
               lines.fail("node tag " + t[0] + " twice");
-            for (unsigned int d = 1; d < 4; ++d)
-              lines.real(t[d], "coordinate");
           }
         lines.expect("$EndNodes", "after the counted nodes");
       }
 
       void
-      check_elements_22(MshLines                                &lines,
-                        const std::unordered_set<unsigned long> &node_tags)
+      check_elements_22(MshLines              &lines,
+                        const Nodes           &nodes,
+                        std::vector<FileCell> &cells)
       {
         const std::string   S = "$Elements";
         const unsigned long n =
@@ -340,8 +399,8 @@ namespace pdfem
             if (t.size() < 3)
               lines.fail("$Elements: expected tag, type, number of tags");
             lines.integer(t[0], "element tag");
-            const unsigned int k =
-              nodes_of_element_type(lines.integer(t[1], "element type"));
+            const unsigned long type = lines.integer(t[1], "element type");
+            const unsigned int  k    = nodes_of_element_type(type);
             if (k == 0)
               lines.fail("element type " + t[1] + " is not a gmsh type");
             const unsigned long n_tags = lines.integer(t[2], "number of tags");
@@ -353,7 +412,7 @@ namespace pdfem
                          std::to_string(t.size()));
             for (std::size_t i = 3; i < 3 + n_tags; ++i)
               lines.integer(t[i], "element " + t[0] + ": tag");
-            check_element_nodes(lines, t, 3 + n_tags, node_tags);
+            check_element_nodes(lines, t, 3 + n_tags, type, nodes, cells);
           }
         lines.expect("$EndElements", "after the counted elements");
       }
@@ -418,14 +477,129 @@ namespace pdfem
             }
         lines.expect("$EndEntities", "after the counted entities");
       }
+      /// What is wrong with the cell of corners @p x (deal.II's vertex
+      /// order); empty if nothing.
+      template <int dim>
+      std::string
+      shape_problem(const std::vector<dealii::Point<dim>> &x)
+      {
+        using namespace dealii;
+        const unsigned int n       = x.size();
+        double             longest = 0.;
+        for (unsigned int a = 0; a < n; ++a)
+          for (unsigned int b = 0; b < a; ++b)
+            longest = std::max(longest, x[a].distance(x[b]));
+        // Corner Jacobians: at each vertex of a hypercube (deal.II's
+        // lexicographic numbering: the neighbour along d is v ^ 2^d, and
+        // the sign of the local axis 1 - 2 bit_d), once for a simplex.
+        const bool simplex  = n == dim + 1;
+        double     smallest = 1e300, largest = -1e300;
+        for (unsigned int v = 0; v < (simplex ? 1 : n); ++v)
+          {
+            Tensor<2, dim> J;
+            double         sign = 1.;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const unsigned int w = simplex ? d + 1 : v ^ (1u << d);
+                const unsigned int o = simplex ? 0 : v;
+                if (!simplex && ((v >> d) & 1u))
+                  sign = -sign;
+                for (unsigned int i = 0; i < dim; ++i)
+                  J[i][d] = x[w][i] - x[o][i];
+              }
+            const double det = sign * determinant(J);
+            smallest         = std::min(smallest, det);
+            largest          = std::max(largest, det);
+          }
+        const double tolerance = 1e-10 * std::pow(longest, dim);
+        if (smallest > tolerance)
+          return "";
+        if (largest > tolerance && smallest < -tolerance)
+          return "is tangled (its corners turn both ways, e.g. a bow-tie)";
+        if (largest < -tolerance)
+          return "is inverted (negative measure)";
+        return "is degenerate (a corner of zero area or volume: a repeated "
+               "vertex, or one on its neighbours' line)";
+      }
+
+      /// Throw if cell number @p index (from 0) of corners @p x is bad.
+      template <int dim>
+      void
+      check_shape(const std::vector<dealii::Point<dim>> &x,
+                  const std::size_t                      index,
+                  const std::string                     &file)
+      {
+        const std::string problem = shape_problem(x);
+        if (problem.empty())
+          return;
+        std::ostringstream where;
+        where << "cell " << index + 1 << " (vertices";
+        for (const auto &p : x)
+          where << " (" << p << ")";
+        where << ")";
+        throw InputError(file,
+                         "elements",
+                         where.str() + " " + problem,
+                         "cells whose corners all turn the same way, with "
+                         "a positive area or volume");
+      }
+
+      /// The shapes of the cells of the mesh's dimension (the highest of
+      /// its linear cells; other cells are faces): tangled or degenerate
+      /// cells are refused, inverted ones left to deal.II's reader, which
+      /// turns them round. deal.II 9.4's GridIn orders the cells with
+      /// GridTools::consistently_order_cells(), which loops forever on some
+      /// tangled quadrilaterals (the .msh fuzz target's find).
+      void
+      check_file_cell_shapes(const MshLines              &lines,
+                             const std::vector<FileCell> &cells,
+                             const Nodes                 &nodes)
+      {
+        const bool three_d =
+          std::any_of(cells.begin(), cells.end(), [](const FileCell &c) {
+            return c.type == 4 || c.type == 5;
+          });
+        for (const FileCell &cell : cells)
+          {
+            if (three_d != (cell.type == 4 || cell.type == 5))
+              continue;
+            // gmsh lists quadrilaterals and hexahedra counter-clockwise;
+            // deal.II numbers their vertices lexicographically.
+            std::vector<unsigned long> order = cell.nodes;
+            if (cell.type == 3 || cell.type == 5)
+              for (std::size_t base = 0; base < order.size(); base += 4)
+                std::swap(order[base + 2], order[base + 3]);
+            std::string problem;
+            if (three_d)
+              {
+                std::vector<dealii::Point<3>> x;
+                for (const unsigned long n : order)
+                  x.emplace_back(nodes.at(n)[0],
+                                 nodes.at(n)[1],
+                                 nodes.at(n)[2]);
+                problem = shape_problem(x);
+              }
+            else
+              {
+                std::vector<dealii::Point<2>> x;
+                for (const unsigned long n : order)
+                  x.emplace_back(nodes.at(n)[0], nodes.at(n)[1]);
+                problem = shape_problem(x);
+              }
+            if (!problem.empty() &&
+                problem.find("inverted") == std::string::npos)
+              lines.fail_at(cell.line, "element " + cell.tag + " " + problem);
+          }
+      }
     } // namespace
 
     void
     check_msh_file(const std::string &msh_file)
     {
-      MshLines                          lines(msh_file);
-      std::unordered_set<unsigned long> node_tags;
-      std::string                       line;
+      MshLines              lines(msh_file);
+      Nodes                 coordinates;
+      std::vector<FileCell> cells;
+      std::string           line;
       bool v4 = false, format = false, nodes = false, elements = false;
       while (lines.next(line))
         {
@@ -456,14 +630,14 @@ namespace pdfem
             check_entities_41(lines);
           else if (line == "$Nodes" && !nodes)
             {
-              v4 ? check_nodes_41(lines, node_tags) :
-                   check_nodes_22(lines, node_tags);
+              v4 ? check_nodes_41(lines, coordinates) :
+                   check_nodes_22(lines, coordinates);
               nodes = true;
             }
           else if (line == "$Elements" && nodes && !elements)
             {
-              v4 ? check_elements_41(lines, node_tags) :
-                   check_elements_22(lines, node_tags);
+              v4 ? check_elements_41(lines, coordinates, cells) :
+                   check_elements_22(lines, coordinates, cells);
               elements = true;
             }
           else if (line == "$Nodes" || line == "$Elements")
@@ -487,74 +661,46 @@ namespace pdfem
                     !nodes  ? "$Nodes" :
                               "$Elements") +
                    " section");
+      check_file_cell_shapes(lines, cells, coordinates);
     }
+
 
     template <int dim>
     void
     check_cell_shapes(const dealii::Triangulation<dim, dim> &tria,
                       const std::string                     &file)
     {
-      using namespace dealii;
       for (const auto &cell : tria.active_cell_iterators())
         {
-          const unsigned int      n = cell->n_vertices();
-          std::vector<Point<dim>> x(n);
-          for (unsigned int v = 0; v < n; ++v)
+          std::vector<dealii::Point<dim>> x(cell->n_vertices());
+          for (unsigned int v = 0; v < x.size(); ++v)
             x[v] = cell->vertex(v);
-          double longest = 0.;
-          for (unsigned int a = 0; a < n; ++a)
-            for (unsigned int b = 0; b < a; ++b)
-              longest = std::max(longest, x[a].distance(x[b]));
-          // Corner Jacobians: at each vertex of a hypercube (deal.II's
-          // lexicographic numbering: the neighbour along d is v ^ 2^d, and
-          // the sign of the local axis 1 - 2 bit_d), once for a simplex.
-          const bool simplex  = n == dim + 1;
-          double     smallest = 1e300, largest = -1e300;
-          for (unsigned int v = 0; v < (simplex ? 1 : n); ++v)
-            {
-              Tensor<2, dim> J;
-              double         sign = 1.;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  const unsigned int w = simplex ? d + 1 : v ^ (1u << d);
-                  const unsigned int o = simplex ? 0 : v;
-                  if (!simplex && ((v >> d) & 1u))
-                    sign = -sign;
-                  for (unsigned int i = 0; i < dim; ++i)
-                    J[i][d] = x[w][i] - x[o][i];
-                }
-              const double det = sign * determinant(J);
-              smallest         = std::min(smallest, det);
-              largest          = std::max(largest, det);
-            }
-          const double tolerance = 1e-10 * std::pow(longest, dim);
-          std::string  problem;
-          if (smallest > tolerance)
-            continue;
-          if (largest > tolerance && smallest < -tolerance)
-            problem = "is tangled (its corners turn both ways, e.g. a "
-                      "bow-tie)";
-          else if (largest < -tolerance)
-            problem = "is inverted (negative measure)";
-          else
-            problem = "is degenerate (a corner of zero area or volume: a "
-                      "repeated vertex, or one on its neighbours' line)";
-          std::ostringstream where;
-          where << "cell " << cell->active_cell_index() + 1 << " (vertices";
-          for (const auto &p : x)
-            where << " (" << p << ")";
-          where << ")";
-          throw InputError(file,
-                           "elements",
-                           where.str() + " " + problem,
-                           "cells whose corners all turn the same way, with "
-                           "a positive area or volume");
+          check_shape(x, cell->active_cell_index(), file);
         }
     }
 
-#define INSTANTIATE(dim)                \
-  template void check_cell_shapes<dim>( \
-    const dealii::Triangulation<dim, dim> &, const std::string &);
+    template <int dim>
+    void
+    check_cell_shapes(const std::vector<dealii::Point<dim, double>> &vertices,
+                      const std::vector<dealii::CellData<dim>>      &cells,
+                      const std::string                             &file)
+    {
+      for (std::size_t c = 0; c < cells.size(); ++c)
+        {
+          std::vector<dealii::Point<dim>> x;
+          for (const unsigned int v : cells[c].vertices)
+            x.push_back(vertices.at(v));
+          check_shape(x, c, file);
+        }
+    }
+
+#define INSTANTIATE(dim)                                           \
+  template void check_cell_shapes<dim>(                            \
+    const dealii::Triangulation<dim, dim> &, const std::string &); \
+  template void check_cell_shapes<dim>(                            \
+    const std::vector<dealii::Point<dim, double>> &,               \
+    const std::vector<dealii::CellData<dim>> &,                    \
+    const std::string &);
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace Mesh

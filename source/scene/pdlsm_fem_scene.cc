@@ -6,10 +6,8 @@
 #include <pdfem/base/exceptions.h>
 #include <pdfem/io/pdlsm_fem_input.h>
 #include <pdfem/mesh/cracks.h>
-#include <pdfem/mesh/mesh_checks.h>
 
-#include <deal.II/grid/grid_tools.h>
-#include <deal.II/grid/tria_description.h>
+#include <deal.II/grid/tria.h>
 
 #include <algorithm>
 #include <cmath>
@@ -37,19 +35,6 @@ namespace pdfem
           std::ostringstream s;
           s << std::setprecision(17) << v;
           return s.str();
-        }
-
-        /// PDLSM-FEM lists quads I J K L and hexes I..P counter-clockwise
-        /// (the usual FE order); deal.II numbers vertices lexicographically.
-        template <int dim>
-        std::vector<unsigned int>
-        to_dealii_order(const std::vector<unsigned int> &v)
-        {
-          if (dim == 2 && v.size() == 4)
-            return {v[0], v[1], v[3], v[2]};
-          if (dim == 3 && v.size() == 8)
-            return {v[0], v[1], v[3], v[2], v[4], v[5], v[7], v[6]};
-          return v; // triangles and tetrahedra: any order
         }
 
         /// Boundary ids given to the natural (traction) sets: 10, 11, ...
@@ -295,42 +280,10 @@ namespace pdfem
         make_output_folder(setup.out_dir, cmd, "output folder", comm);
 
         // ---- cells: vertex index = node id - 1, material id = element type
-        auto                    start = std::chrono::steady_clock::now();
-        std::vector<Point<dim>> vertices(model.nodes.size());
-        for (std::size_t k = 0; k < model.nodes.size(); ++k)
-          for (unsigned int d = 0; d < dim; ++d)
-            vertices[k][d] = model.nodes[k][d];
-        std::vector<CellData<dim>> cells(model.elements.size());
-        bool                       hypercubes_only = true;
-        for (std::size_t e = 0; e < model.elements.size(); ++e)
-          {
-            cells[e].vertices =
-              to_dealii_order<dim>(model.elements[e].vertices);
-            cells[e].material_id = model.elements[e].type; // 1 PD, 2 FE
-            hypercubes_only =
-              hypercubes_only &&
-              cells[e].vertices.size() == GeometryInfo<dim>::vertices_per_cell;
-          }
-        if (hypercubes_only)
-          {
-            GridTools::invert_all_negative_measure_cells(vertices, cells);
-            GridTools::consistently_order_cells(cells);
-          }
+        auto start = std::chrono::steady_clock::now();
         setup.create_triangulation(comm);
         auto &tria = *setup.tria;
-        try
-          {
-            tria.create_triangulation(vertices, cells, SubCellData());
-          }
-        catch (const std::exception &e)
-          {
-            throw InputError(model.mesh_file,
-                             "elements",
-                             "deal.II cannot build a mesh from these elements",
-                             "conforming, non-inverted Q4/T3 (2D) or H8/T4 "
-                             "(3D) elements");
-          }
-        Mesh::check_cell_shapes(tria, model.mesh_file);
+        IO::create_triangulation(model, tria);
         setup.cell_is_pd.assign(tria.n_active_cells(), false);
         for (const auto &cell : tria.active_cell_iterators())
           setup.cell_is_pd[cell->active_cell_index()] =

@@ -242,17 +242,7 @@ namespace pdfem
 
         const Mesh::PhysicalNames names = Mesh::read_physical_names(msh, dim);
         auto                     &tria  = setup.create_triangulation(comm);
-        try
-          {
-            Mesh::read_msh<dim>(msh, tria);
-          }
-        catch (const std::exception &e)
-          {
-            throw InputError(prm.file,
-                             "Mesh/Input file",
-                             "cannot read the mesh '" + msh + "'",
-                             "a gmsh mesh of dimension " + std::to_string(dim));
-          }
+        Mesh::read_msh<dim>(msh, tria);
         Mesh::check_cell_shapes(tria, msh);
         // Node sets (physical points) as vertex indices, which global
         // refinement keeps; read only when the scene uses them (so that a
@@ -470,13 +460,7 @@ namespace pdfem
               MPI_Comm                 comm,
               const clock::time_point  start)
       {
-        auto       plugins = make_plugins<dim>(prm.file,
-                                         prm.driver,
-                                         prm.fracture,
-                                         prm.peridynamics.model,
-                                         prm.handler.get(),
-                                         prm.material.density,
-                                         prm.linear_solver);
+        auto       plugins = plugins_of<dim>(prm);
         Setup<dim> setup;
         setup.total_start = start;
         setup_from_prm<dim>(prm, options, comm, setup);
@@ -486,6 +470,19 @@ namespace pdfem
         return simulator.run();
       }
     } // namespace
+
+    template <int dim>
+    RunPlugins<dim>
+    plugins_of(const Parameters::Scene &prm)
+    {
+      return make_plugins<dim>(prm.file,
+                               prm.driver,
+                               prm.fracture,
+                               prm.peridynamics.model,
+                               prm.handler.get(),
+                               prm.material.density,
+                               prm.linear_solver);
+    }
 
     int
     run(const std::string &file, const RunOptions &options, MPI_Comm comm)
@@ -523,5 +520,10 @@ namespace pdfem
           return ExitCode::input_error;
         }
     }
+
+#define INSTANTIATE(dim) \
+  template RunPlugins<dim> plugins_of<dim>(const Parameters::Scene &);
+    PDFEM_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
   } // namespace Scene
 } // namespace pdfem

@@ -7,6 +7,12 @@
 #include <string>
 #include <vector>
 
+namespace dealii
+{
+  template <int dim, int spacedim>
+  class Triangulation;
+}
+
 namespace pdfem
 {
   namespace IO
@@ -14,8 +20,9 @@ namespace pdfem
     /**
      * Everything a PDLSM-FEM command file and its .lis mesh file say
      * (specs/004 §4.1 command file, §4.2 mesh file, §1.4 element kinds, §2.5
-     * boundary conditions, §3 failure criteria). Nothing here depends on
-     * deal.II: the numbering is the file's, made 0-based.
+     * boundary conditions, §3 failure criteria). The model does not depend on
+     * deal.II (create_triangulation() makes its cells): the numbering is the
+     * file's, made 0-based.
      *
      * After read_pdlsm_fem() the command-file overrides (EBC, VEBC, NBC, VNBC)
      * have already been applied to #essential and #natural (see
@@ -195,6 +202,23 @@ namespace pdfem
      */
     void
     apply_pdlsm_fem_overrides(PDLSMFEMModel &model);
+
+    /**
+     * The cells of @p model's mesh in @p tria (empty, of the model's
+     * dimension): vertex k is node k, the material id is the element type
+     * (1 PD, 2 FE). Quadrilaterals and hexahedra are taken from the peer's
+     * counter-clockwise order to deal.II's lexicographic one, inverted cells
+     * turned and all cells oriented consistently; then the shapes are
+     * checked (Mesh::check_cell_shapes()).
+     *
+     * @throws pdfem::InputError naming the mesh file if deal.II cannot build
+     * a mesh from the elements (non-conforming, not orientable) or a cell
+     * is degenerate or tangled.
+     */
+    template <int dim>
+    void
+    create_triangulation(const PDLSMFEMModel             &model,
+                         dealii::Triangulation<dim, dim> &tria);
   } // namespace IO
 } // namespace pdfem
 

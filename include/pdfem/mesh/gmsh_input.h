@@ -55,7 +55,12 @@ namespace pdfem
                      const std::string &prm_file,
                      const std::string &parameter);
 
-    /// Read a gmsh `.msh` file into @p tria (which must be empty).
+    /**
+     * Read a gmsh `.msh` file into @p tria (which must be empty) with
+     * deal.II's GridIn. Call check_msh_file() first: GridIn trusts the
+     * file's counts. @throws pdfem::InputError naming @p msh_file with
+     * deal.II's reason as one line.
+     */
     template <int dim>
     void
     read_msh(const std::string               &msh_file,

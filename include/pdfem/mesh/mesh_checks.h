@@ -3,12 +3,17 @@
 #define PDFEM_MESH_MESH_CHECKS_H
 
 #include <string>
+#include <vector>
 
 namespace dealii
 {
   template <int dim, int spacedim>
   class Triangulation;
-}
+  template <int dim, typename Number>
+  class Point;
+  template <int structdim>
+  struct CellData;
+} // namespace dealii
 
 namespace pdfem
 {
@@ -19,10 +24,13 @@ namespace pdfem
      * 4.1) before any reader sees it: every section closed where its counts
      * say, each line with the number of fields its section and element type
      * ask for, numbers that parse and coordinates that are finite, node tags
-     * unique and within the declared range, and every element node a node of
-     * `$Nodes`. deal.II's GridIn::read_msh trusts these and corrupts memory
-     * on a truncated or miscounted 4.1 file (issue 19: 26 of 160 mutated
-     * files aborted); binary files are refused.
+     * unique and within the declared range, every element node a node of
+     * `$Nodes`, and the cells of the mesh's dimension neither tangled nor
+     * degenerate (as check_cell_shapes(); inverted ones are left to the
+     * reader, which turns them round). deal.II's GridIn::read_msh trusts
+     * these: it corrupted memory on a truncated or miscounted 4.1 file
+     * (issue 19: 26 of 160 mutated files aborted) and looped forever on a
+     * tangled quadrilateral (found by fuzzing); binary files are refused.
      *
      * @throws pdfem::InputError naming @p msh_file, the line ("line N") and
      * what was expected there.
@@ -48,6 +56,20 @@ namespace pdfem
     void
     check_cell_shapes(const dealii::Triangulation<dim, dim> &tria,
                       const std::string                     &file);
+
+    /**
+     * The same checks on cells not yet made into a triangulation: @p cells
+     * (vertex indices into @p vertices, in deal.II's order), numbered "cell
+     * N" in the order of the vector. Call it before anything that needs
+     * sound cells: deal.II 9.4's GridTools::consistently_order_cells()
+     * loops forever on a tangled quadrilateral (found by the .in/.lis fuzz
+     * target).
+     */
+    template <int dim>
+    void
+    check_cell_shapes(const std::vector<dealii::Point<dim, double>> &vertices,
+                      const std::vector<dealii::CellData<dim>>      &cells,
+                      const std::string                             &file);
   } // namespace Mesh
 } // namespace pdfem
 

@@ -10,6 +10,13 @@
 
 namespace pdfem
 {
+  namespace Parameters
+  {
+    struct Scene;
+  }
+  template <int dim>
+  struct RunPlugins;
+
   namespace Scene
   {
     /** Command-line choices that override the scene file. */
@@ -43,6 +50,15 @@ namespace pdfem
      */
     int
     run(const std::string &file, const RunOptions &options, MPI_Comm comm);
+
+    /**
+     * The plugins the parameter file @p prm names (its driver, crack
+     * criterion, PD model and linear solver), made and checked by
+     * make_plugins(). Throws InputError.
+     */
+    template <int dim>
+    RunPlugins<dim>
+    plugins_of(const Parameters::Scene &prm);
   } // namespace Scene
 } // namespace pdfem
 
