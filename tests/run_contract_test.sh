@@ -91,4 +91,28 @@ cmp -s "$work/first/nodes.csv" "$work/again/nodes.csv" || fail "parameters.prm g
 [ ! -e "$work/again/solution_00099.vtu" ] && [ ! -e "$work/again/crack_paths.csv" ] \
   || fail "an earlier run's outputs stayed in the folder"
 [ -e "$work/again/notes.txt" ] || fail "a file pdfem does not write was removed"
+# a read-only output folder: refused before any work, one line, nothing written. Root writes
+# anyway, so as root the run is made as 'nobody' where that user can run pdfem (else skipped).
+ro="$work/readonly"
+mkdir -p "$ro" && chmod 555 "$ro"
+as_user=()
+if [ "$(id -u)" = 0 ]; then
+  chmod -R a+rX "$work"
+  if command -v runuser > /dev/null && runuser -u nobody -- test -x "$pdfem" \
+    && runuser -u nobody -- test -r "$scenes/patch_2d_quad.prm"; then
+    as_user=(runuser -u nobody -- env HOME=/tmp)
+  else
+    ro=""
+    echo "read-only folder: skipped (root, and 'nobody' cannot run pdfem here)"
+  fi
+fi
+if [ -n "$ro" ]; then
+  "${as_user[@]}" "$pdfem" "$scenes/patch_2d_quad.prm" --output "$ro" --quiet > "$work/ro.out" 2> "$work/ro.err"
+  [ $? -eq 2 ] || fail "read-only folder: status not 2"
+  [ "$(wc -l < "$work/ro.err")" -eq 1 ] || fail "read-only folder: not one line: $(cat "$work/ro.err")"
+  grep -q "cannot write into the output folder '$ro': Permission denied" "$work/ro.err" \
+    || fail "read-only folder: message $(cat "$work/ro.err")"
+  [ -z "$(ls -A "$ro")" ] || fail "read-only folder: something was written"
+  echo "read-only folder: $(cat "$work/ro.err")"
+fi
 echo "run contract test passed"

@@ -21,7 +21,9 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -31,7 +33,9 @@
 #include <set>
 
 #include "scene_internal.h"
+#include <fcntl.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 namespace pdfem
 {
@@ -380,18 +384,35 @@ namespace pdfem
                          const std::string &parameter,
                          MPI_Comm           comm)
       {
+        // Checked on rank 0, the verdict shared: every rank stops alike.
+        std::string problem;
         if (Utilities::MPI::this_mpi_process(comm) == 0)
           {
             std::error_code ec;
             fs::create_directories(out_dir, ec);
             if (ec || !fs::is_directory(out_dir))
-              throw InputError(file,
-                               parameter,
-                               "cannot create the output folder '" + out_dir +
-                                 "': " + ec.message(),
-                               "a writable folder");
+              problem = "cannot create the output folder '" + out_dir +
+                        "': " + (ec ? ec.message() : "not a folder");
+            else
+              {
+                // An existing folder may be read-only (checked by writing,
+                // which also covers ACLs and read-only mounts).
+                const std::string probe = out_dir + "/.pdfem-write-test";
+                const int         fd =
+                  ::open(probe.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+                if (fd < 0)
+                  problem = "cannot write into the output folder '" + out_dir +
+                            "': " + std::strerror(errno);
+                else
+                  {
+                    ::close(fd);
+                    ::unlink(probe.c_str());
+                  }
+              }
           }
-        MPI_Barrier(comm);
+        problem = Utilities::MPI::broadcast(comm, problem, 0);
+        if (!problem.empty())
+          throw InputError(file, parameter, problem, "a writable folder");
       }
 
     } // namespace internal
