@@ -16,19 +16,6 @@ namespace pdfem
   {
     namespace
     {
-      /// PDLSM-FEM lists quads I J K L and hexes I..P counter-clockwise
-      /// (the usual FE order); deal.II numbers vertices lexicographically.
-      template <int dim>
-      std::vector<unsigned int>
-      to_dealii_order(const std::vector<unsigned int> &v)
-      {
-        if (dim == 2 && v.size() == 4)
-          return {v[0], v[1], v[3], v[2]};
-        if (dim == 3 && v.size() == 8)
-          return {v[0], v[1], v[3], v[2], v[4], v[5], v[7], v[6]};
-        return v; // triangles and tetrahedra: any order
-      }
-
       InputError
       cannot_build(const PDLSMFEMModel &model)
       {
@@ -54,7 +41,8 @@ namespace pdfem
       bool                       hypercubes_only = true;
       for (std::size_t e = 0; e < model.elements.size(); ++e)
         {
-          cells[e].vertices = to_dealii_order<dim>(model.elements[e].vertices);
+          cells[e].vertices =
+            Mesh::lexicographic_vertex_order(model.elements[e].vertices, dim);
           cells[e].material_id = model.elements[e].type; // 1 PD, 2 FE
           hypercubes_only =
             hypercubes_only &&

@@ -477,11 +477,14 @@ namespace pdfem
             }
         lines.expect("$EndEntities", "after the counted entities");
       }
+
       /// What is wrong with the cell of corners @p x (deal.II's vertex
-      /// order); empty if nothing.
+      /// order); empty if nothing, or if it is only inverted and
+      /// @p inverted_allowed.
       template <int dim>
       std::string
-      shape_problem(const std::vector<dealii::Point<dim>> &x)
+      shape_problem(const std::vector<dealii::Point<dim>> &x,
+                    const bool inverted_allowed = false)
       {
         using namespace dealii;
         const unsigned int n       = x.size();
@@ -517,7 +520,7 @@ namespace pdfem
         if (largest > tolerance && smallest < -tolerance)
           return "is tangled (its corners turn both ways, e.g. a bow-tie)";
         if (largest < -tolerance)
-          return "is inverted (negative measure)";
+          return inverted_allowed ? "" : "is inverted (negative measure)";
         return "is degenerate (a corner of zero area or volume: a repeated "
                "vertex, or one on its neighbours' line)";
       }
@@ -550,6 +553,20 @@ namespace pdfem
       /// turns them round. deal.II 9.4's GridIn orders the cells with
       /// GridTools::consistently_order_cells(), which loops forever on some
       /// tangled quadrilaterals (the .msh fuzz target's find).
+      /// shape_problem() of a cell of the file, as a cell of dimension
+      /// @p dim; an inverted cell is no problem (the reader turns it).
+      template <int dim>
+      std::string
+      file_cell_problem(const FileCell &cell, const Nodes &nodes)
+      {
+        const auto order = lexicographic_vertex_order(cell.nodes, dim);
+        std::vector<dealii::Point<dim>> x(order.size());
+        for (std::size_t k = 0; k < order.size(); ++k)
+          for (unsigned int d = 0; d < dim; ++d)
+            x[k][d] = nodes.at(order[k])[d];
+        return shape_problem(x, true);
+      }
+
       void
       check_file_cell_shapes(const MshLines              &lines,
                              const std::vector<FileCell> &cells,
@@ -563,31 +580,10 @@ namespace pdfem
           {
             if (three_d != (cell.type == 4 || cell.type == 5))
               continue;
-            // gmsh lists quadrilaterals and hexahedra counter-clockwise;
-            // deal.II numbers their vertices lexicographically.
-            std::vector<unsigned long> order = cell.nodes;
-            if (cell.type == 3 || cell.type == 5)
-              for (std::size_t base = 0; base < order.size(); base += 4)
-                std::swap(order[base + 2], order[base + 3]);
-            std::string problem;
-            if (three_d)
-              {
-                std::vector<dealii::Point<3>> x;
-                for (const unsigned long n : order)
-                  x.emplace_back(nodes.at(n)[0],
-                                 nodes.at(n)[1],
-                                 nodes.at(n)[2]);
-                problem = shape_problem(x);
-              }
-            else
-              {
-                std::vector<dealii::Point<2>> x;
-                for (const unsigned long n : order)
-                  x.emplace_back(nodes.at(n)[0], nodes.at(n)[1]);
-                problem = shape_problem(x);
-              }
-            if (!problem.empty() &&
-                problem.find("inverted") == std::string::npos)
+            const std::string problem = three_d ?
+                                          file_cell_problem<3>(cell, nodes) :
+                                          file_cell_problem<2>(cell, nodes);
+            if (!problem.empty())
               lines.fail_at(cell.line, "element " + cell.tag + " " + problem);
           }
       }

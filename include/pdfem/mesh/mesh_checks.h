@@ -3,6 +3,7 @@
 #define PDFEM_MESH_MESH_CHECKS_H
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dealii
@@ -19,6 +20,22 @@ namespace pdfem
 {
   namespace Mesh
   {
+    /**
+     * The vertices of a cell listed counter-clockwise, as gmsh and
+     * PDLSM-FEM list them (quadrilateral 0 1 2 3; hexahedron the bottom
+     * face, then the top one), in deal.II's lexicographic order. A cell of
+     * @p dim with other than 2^dim vertices (a simplex) is returned as it is.
+     */
+    template <typename Index>
+    std::vector<Index>
+    lexicographic_vertex_order(std::vector<Index> v, const unsigned int dim)
+    {
+      if (v.size() == (1u << dim))
+        for (std::size_t face = 0; face < v.size(); face += 4)
+          std::swap(v[face + 2], v[face + 3]);
+      return v;
+    }
+
     /**
      * Check that @p msh_file is a well-formed ASCII gmsh mesh (format 2.2 or
      * 4.1) before any reader sees it: every section closed where its counts
