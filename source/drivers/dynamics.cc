@@ -6,6 +6,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <iomanip>
@@ -243,8 +244,8 @@ namespace pdfem
         state.put_owned(prefix + "u_old", u_old);
         state.put_owned(prefix + "force_old", force_old);
         state.put(prefix + "scalars",
-                  std::vector<double>{
-                    e0, work, dissipated, kinetic, strain, peak, peak_total});
+                  std::array<double, 7>{
+                    {e0, work, dissipated, kinetic, strain, peak, peak_total}});
         state.put(prefix + "totals",
                   std::vector<double>(totals.begin(), totals.end()));
         state.put(prefix + "errors",
@@ -261,9 +262,7 @@ namespace pdfem
         force_old.reinit(u_old);
         state.get_owned(prefix + "u_old", u_old);
         state.get_owned(prefix + "force_old", force_old);
-        const auto v = state.get_vector<double>(prefix + "scalars");
-        if (v.size() != 7)
-          throw InputError("", prefix + "scalars", "7 values expected");
+        const auto v = state.get<std::array<double, 7>>(prefix + "scalars");
         e0           = v[0];
         work         = v[1];
         dissipated   = v[2];
@@ -437,9 +436,9 @@ namespace pdfem
         state.put_owned(prefix + "u_last", u_last);
         state.put_owned(prefix + "force_last", force_last);
         state.put(prefix + "steps", n_steps);
-        state.put(
-          prefix + "scalars",
-          std::vector<double>{g0, g, work, dissipated, scale, strain_part});
+        state.put(prefix + "scalars",
+                  std::array<double, 6>{
+                    {g0, g, work, dissipated, scale, strain_part}});
       }
 
       void
@@ -452,15 +451,13 @@ namespace pdfem
         state.get_owned(prefix + "u_last", u_last);
         state.get_owned(prefix + "force_last", force_last);
         n_steps      = state.get<unsigned int>(prefix + "steps");
-        const auto v = state.get_vector<double>(prefix + "scalars");
-        if (v.size() != 6)
-          throw InputError("", prefix + "scalars", "6 values expected");
-        g0          = v[0];
-        g           = v[1];
-        work        = v[2];
-        dissipated  = v[3];
-        scale       = v[4];
-        strain_part = v[5];
+        const auto v = state.get<std::array<double, 6>>(prefix + "scalars");
+        g0           = v[0];
+        g            = v[1];
+        work         = v[2];
+        dissipated   = v[3];
+        scale        = v[4];
+        strain_part  = v[5];
       }
     } // namespace internal
   }   // namespace Drivers
