@@ -79,6 +79,17 @@ namespace pdfem
         std::raise(SIGKILL);
     }
 
+    /// The first non-empty @p error of the ranks in rank order (empty if
+    /// none): the same on every rank, so all can stop alike.
+    std::string
+    first_error(const MPI_Comm comm, const std::string &error)
+    {
+      for (const std::string &e : Utilities::MPI::all_gather(comm, error))
+        if (!e.empty())
+          return e;
+      return "";
+    }
+
     /// Run @p f on every rank; if it threw InputError on any, every rank
     /// throws the first rank's message (no rank is left waiting in a
     /// collective call).
@@ -94,9 +105,9 @@ namespace pdfem
         {
           error = e.what();
         }
-      for (const std::string &e : Utilities::MPI::all_gather(comm, error))
-        if (!e.empty())
-          throw InputError("", "", e);
+      error = first_error(comm, error);
+      if (!error.empty())
+        throw InputError("", "", error);
     }
   } // namespace
 
@@ -322,9 +333,9 @@ namespace pdfem
       0);
     if (error.empty())
       error = state.write(rank_file(incoming, rank));
-    for (const std::string &e : Utilities::MPI::all_gather(comm, error))
-      if (!e.empty())
-        throw RunFailure("io error", "writing the checkpoint failed: " + e);
+    error = first_error(comm, error);
+    if (!error.empty())
+      throw RunFailure("io error", "writing the checkpoint failed: " + error);
     kill_if_asked("checkpoint", n_steps);
     if (rank == 0)
       {
