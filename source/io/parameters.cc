@@ -290,7 +290,11 @@ namespace pdfem
                         "PD model of the PD cells (pdfem --list-plugins). "
                         "auto: 'pdlsm energy' for the dynamic drivers "
                         "(explicit, newmark), whose collocated counterpart "
-                        "has growing modes, and 'pdlsm' otherwise. " +
+                        "has growing modes, and for scenes with cracks "
+                        "(Pre-existing cracks or a Fracture/Criterion), "
+                        "whose supports it leaves unloaded; 'pdlsm' "
+                        "otherwise, and for static scenes with Crack faces "
+                        "= free surface. " +
                           models.summary() +
                           "rnp scenes run every cell as PD (subsection "
                           "RNP).");
@@ -308,7 +312,9 @@ namespace pdfem
         "Crack faces",
         "cut bonds",
         Selection("cut bonds|free surface"),
-        "How a crack (pre-existing or grown by mcts) enters the PDLSM model. "
+        "How a crack (pre-existing or grown by mcts) enters the collocated "
+        "pdlsm model (pdlsm energy refits cut families itself and refuses "
+        "'free surface'). "
         "'cut bonds': the bonds crossing it are removed and every family "
         "keeps the fit of its whole initial family (PDLSM-FEM). 'free "
         "surface': in addition, families that lost bonds to a crack are "

@@ -80,6 +80,16 @@ namespace pdfem
        * AMG instead stalled at 4e-6 after 260 iterations (centre-crack
        * strip, 12 462 nodes, m = 4), where the factorisation takes 6.7 s
        * (doc/theory.md §12.2).
+       *
+       * A is assembled in parallel, then gathered and factorised by MUMPS
+       * on rank 0 alone, which also applies the factors (the right-hand
+       * sides are replicated anyway) and broadcasts the result. MUMPS on
+       * two ranks, even with its communicator cut to one process (Amesos'
+       * MaxProcs = 1) or a fixed ordering, changed the factors in the last
+       * digits from one run to the next, and with them every result of the
+       * energy form: a 2-rank run restarted from a checkpoint differed from
+       * the run left alone by 1e-14 relative. Centralised on one process,
+       * as on one rank, it repeats itself.
        */
       template <int dim>
       class FactorisedOperator
@@ -92,6 +102,7 @@ namespace pdfem
           : owned(Utilities::MPI::create_evenly_distributed_partitioning(
               comm,
               diag.size()))
+          , root(Utilities::MPI::this_mpi_process(comm) == 0)
           , control(1, 0)
           , solver(
               control,
@@ -120,7 +131,7 @@ namespace pdfem
           for (const auto j : owned)
             sp.add(j, j);
           sp.compress();
-          matrix.reinit(sp);
+          TrilinosWrappers::SparseMatrix assembled(sp);
 
           FullMatrix<double> block;
           for (std::size_t i = 0; i < P.size(); ++i)
@@ -131,30 +142,73 @@ namespace pdfem
                 for (std::size_t b = 0; b < m; ++b)
                   block(a, b) = volume[i] * P[i].entry(a, b);
               nodes.assign(P[i].nodes.begin(), P[i].nodes.end());
-              matrix.add(nodes, block);
+              assembled.add(nodes, block);
             }
           for (const auto j : owned)
-            matrix.add(j, j, diag[j] > 0. ? 1e-8 * diag[j] : 1.);
-          matrix.compress(VectorOperation::add);
-          try
+            assembled.add(j, j, diag[j] > 0. ? 1e-8 * diag[j] : 1.);
+          assembled.compress(VectorOperation::add);
+
+          // The owned rows in order (the partition is contiguous and
+          // ordered by rank), gathered on rank 0.
+          std::vector<int>          row_length;
+          std::vector<unsigned int> column;
+          std::vector<double>       value;
+          for (const auto j : owned)
             {
-              solver.initialize(matrix);
+              row_length.push_back(assembled.row_length(j));
+              for (auto e = assembled.begin(j); e != assembled.end(j); ++e)
+                {
+                  column.push_back(e->column());
+                  value.push_back(e->value());
+                }
             }
-          catch (const std::exception &e)
-            {
-              throw RunFailure(
-                "singular matrix",
-                "the integration-constraint correction (Peridynamics/Model = "
-                "pdlsm energy) could not factorise its operator: " +
-                  ParameterTools::clean_dealii_message(e.what()).substr(0,
-                                                                        200));
-            }
-          b.reinit(owned, comm);
-          x.reinit(owned, comm);
+          row_length = gather(row_length, MPI_INT, comm);
+          column     = gather(column, MPI_UNSIGNED, comm);
+          value      = gather(value, MPI_DOUBLE, comm);
+
+          std::string error;
+          if (root)
+            try
+              {
+                const IndexSet                    all = complete_index_set(n);
+                TrilinosWrappers::SparsityPattern serial(all, MPI_COMM_SELF);
+                std::vector<types::global_dof_index> columns;
+                std::size_t                          e = 0;
+                for (unsigned int j = 0; j < n; ++j)
+                  {
+                    columns.assign(column.begin() + e,
+                                   column.begin() + e + row_length[j]);
+                    std::sort(columns.begin(), columns.end());
+                    serial.add_entries(j, columns.begin(), columns.end(), true);
+                    e += row_length[j];
+                  }
+                serial.compress();
+                matrix.reinit(serial);
+                e = 0;
+                for (unsigned int j = 0; j < n; ++j)
+                  for (int k = 0; k < row_length[j]; ++k, ++e)
+                    matrix.set(j, column[e], value[e]);
+                matrix.compress(VectorOperation::insert);
+                b.reinit(all, MPI_COMM_SELF);
+                x.reinit(all, MPI_COMM_SELF);
+                solver.initialize(matrix);
+              }
+            catch (const std::exception &e)
+              {
+                error = ParameterTools::clean_dealii_message(e.what());
+              }
+          error = Utilities::MPI::broadcast(comm, error, 0);
+          if (!error.empty())
+            throw RunFailure(
+              "singular matrix",
+              "the integration-constraint correction (Peridynamics/Model = "
+              "pdlsm energy) could not factorise its operator: " +
+                error.substr(0, 200));
         }
 
         /// z = (A + eps diag A)^-1 r for each of the @p components columns
-        /// (replicated vectors, length components x n; collective).
+        /// (replicated vectors, length components x n; collective: rank 0
+        /// solves, every rank receives z).
         void
         apply(const std::vector<double> &r,
               std::vector<double>       &z,
@@ -162,24 +216,54 @@ namespace pdfem
               const MPI_Comm            &comm)
         {
           const std::size_t n = owned.size();
-          std::fill(z.begin(), z.end(), 0.);
-          for (unsigned int c = 0; c < components; ++c)
-            {
-              for (const auto j : owned)
-                b[j] = r[c * n + j];
-              solver.solve(x, b);
-              for (const auto j : owned)
-                z[c * n + j] = x[j];
-            }
-          Utilities::MPI::sum(z, comm, z);
+          if (root)
+            for (unsigned int c = 0; c < components; ++c)
+              {
+                for (std::size_t j = 0; j < n; ++j)
+                  b[j] = r[c * n + j];
+                solver.solve(x, b);
+                for (std::size_t j = 0; j < n; ++j)
+                  z[c * n + j] = x[j];
+              }
+          MPI_Bcast(z.data(), components * n, MPI_DOUBLE, 0, comm);
         }
 
       private:
-        const IndexSet                 owned;
+        /// Rows of A assembled on this rank.
+        const IndexSet owned;
+        const bool     root;
+        /// A on rank 0 (MPI_COMM_SELF), its factors and vectors.
         TrilinosWrappers::SparseMatrix matrix;
         SolverControl                  control;
         TrilinosWrappers::SolverDirect solver;
         TrilinosWrappers::MPI::Vector  b, x;
+
+        /// The pieces of @p local of every rank, in rank order, on rank 0
+        /// (empty elsewhere).
+        template <typename T>
+        static std::vector<T>
+        gather(const std::vector<T> &local, MPI_Datatype type, MPI_Comm comm)
+        {
+          const int        size = local.size();
+          std::vector<int> sizes(Utilities::MPI::n_mpi_processes(comm));
+          MPI_Gather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, comm);
+          std::vector<int> offsets(sizes.size(), 0);
+          for (std::size_t r = 1; r < sizes.size(); ++r)
+            offsets[r] = offsets[r - 1] + sizes[r - 1];
+          std::vector<T> all(Utilities::MPI::this_mpi_process(comm) == 0 ?
+                               offsets.back() + sizes.back() :
+                               0);
+          MPI_Gatherv(local.data(),
+                      size,
+                      type,
+                      all.data(),
+                      sizes.data(),
+                      offsets.data(),
+                      type,
+                      0,
+                      comm);
+          return all;
+        }
       };
     } // namespace
 

@@ -433,7 +433,7 @@ namespace pdfem
         auto           plugins = make_plugins<dim>(setup.file,
                                          setup.driver,
                                          setup.fracture,
-                                         "pdlsm",
+                                         ModelChoice{"pdlsm"},
                                          nullptr,
                                          setup.settings.material.density,
                                          setup.settings.linear_solver);
@@ -499,7 +499,9 @@ namespace pdfem
       return make_plugins<dim>(prm.file,
                                prm.driver,
                                prm.fracture,
-                               prm.peridynamics.model,
+                               ModelChoice{prm.peridynamics.model,
+                                           !prm.peridynamics.cracks.empty(),
+                                           prm.peridynamics.free_crack_faces},
                                prm.handler.get(),
                                prm.material.density,
                                prm.linear_solver);

@@ -102,9 +102,13 @@ namespace pdfem
   }
 
   std::string
-  default_model_name(const bool dynamic_driver)
+  default_model_name(const bool dynamic_driver,
+                     const bool cracks,
+                     const bool free_crack_faces)
   {
-    return dynamic_driver ? "pdlsm energy" : "pdlsm";
+    if (dynamic_driver)
+      return "pdlsm energy";
+    return cracks && !free_crack_faces ? "pdlsm energy" : "pdlsm";
   }
 
   template <int dim>
@@ -112,7 +116,7 @@ namespace pdfem
   make_plugins(const std::string        &file,
                const Drivers::Settings  &driver_settings,
                const Fracture::Settings &fracture,
-               const std::string        &model_name,
+               const ModelChoice        &model,
                dealii::ParameterHandler *parameters,
                const double              density,
                const Solvers::Settings  &linear_solver)
@@ -120,9 +124,19 @@ namespace pdfem
     RunPlugins<dim> plugins;
     plugins.driver = Drivers::create(driver_settings.type, file);
     plugins.driver->initialize(driver_settings, file, dim);
-    plugins.model_name = model_name == "auto" ?
-                           default_model_name(plugins.driver->dynamic()) :
-                           model_name;
+    plugins.model_name = model.name == "auto" ?
+                           default_model_name(plugins.driver->dynamic(),
+                                              model.pre_existing_cracks ||
+                                                fracture.criterion != "none",
+                                              model.free_crack_faces) :
+                           model.name;
+    if (model.free_crack_faces && plugins.model_name != "pdlsm")
+      throw InputError(file,
+                       "Peridynamics/Crack faces",
+                       "'free surface' is an option of the collocated "
+                       "pdlsm; " +
+                         plugins.model_name + " treats crack faces itself",
+                       "'cut bonds', or Peridynamics/Model = pdlsm");
     if (parameters != nullptr)
       {
         plugins.model = PDModels::create<dim>(plugins.model_name, file);
@@ -563,7 +577,7 @@ namespace pdfem
       plugins = make_plugins<dim>(s.setup.file,
                                   s.setup.driver,
                                   s.setup.fracture,
-                                  "pdlsm",
+                                  ModelChoice{"pdlsm"},
                                   nullptr,
                                   s.setup.settings.material.density,
                                   s.setup.settings.linear_solver);
@@ -777,7 +791,7 @@ namespace pdfem
   template RunPlugins<dim> make_plugins<dim>(const std::string &,               \
                                              const Drivers::Settings &,         \
                                              const Fracture::Settings &,        \
-                                             const std::string &,               \
+                                             const ModelChoice &,               \
                                              dealii::ParameterHandler *,        \
                                              double,                            \
                                              const Solvers::Settings &);        \

@@ -133,18 +133,39 @@ namespace pdfem
   };
 
   /**
-   * The PD model that `Peridynamics/Model = auto` stands for: the
-   * energy form `pdlsm energy` for dynamic drivers (the collocated pdlsm's
-   * stiffness is not symmetric, and M^-1 K has growing modes: issue 16,
-   * doc/benchmarks/dynamics.md), the collocated `pdlsm` (PDLSM-FEM's
-   * operator) otherwise.
+   * The PD model a scene asks for: a registry name or `auto`, with what
+   * `auto` is resolved from (default_model_name()).
    */
-  std::string
-  default_model_name(bool dynamic_driver);
+  struct ModelChoice
+  {
+    std::string name = "auto";
+    /// The scene starts with cracks (Peridynamics/Pre-existing cracks).
+    bool pre_existing_cracks = false;
+    /// Peridynamics/Crack faces = free surface, an option of `pdlsm`.
+    bool free_crack_faces = false;
+  };
 
   /**
-   * The PD model @p model_name (`auto`: default_model_name() for the
-   * driver), the driver and the criterion named in
+   * The PD model that `Peridynamics/Model = auto` stands for, picked from
+   * the measurements of doc/benchmarks/operator.md and dynamics.md
+   * (issue 16):
+   * - the energy form `pdlsm energy` for dynamic drivers (the collocated
+   *   pdlsm's stiffness is not symmetric, and M^-1 K has growing modes)
+   *   and for scenes with cracks, pre-existing or grown by a criterion
+   *   (its supports carry nothing, so K does not depend on where the body
+   *   is held, and its K converges with the mesh);
+   * - the collocated `pdlsm` (PDLSM-FEM's operator) for crack-free static
+   *   scenes (more accurate per second on a stress concentration), and
+   *   for static scenes that ask for `Crack faces = free surface`, an
+   *   option of the collocated operator only.
+   */
+  std::string
+  default_model_name(bool dynamic_driver, bool cracks, bool free_crack_faces);
+
+  /**
+   * The PD model of @p model (`auto`: default_model_name() for the
+   * driver, the cracks and the criterion), the driver and the criterion named
+   * in
    * @p driver_settings (`type`) and @p fracture (`criterion`), made from
    * the registries, given their parameters and checked together with the
    * rest of the run (make_run_traits(), check_plugins()). The model reads
@@ -158,7 +179,7 @@ namespace pdfem
   make_plugins(const std::string        &file,
                const Drivers::Settings  &driver_settings,
                const Fracture::Settings &fracture,
-               const std::string        &model_name,
+               const ModelChoice        &model,
                dealii::ParameterHandler *parameters,
                double                    density,
                const Solvers::Settings  &linear_solver);
