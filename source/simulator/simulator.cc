@@ -106,9 +106,8 @@ namespace pdfem
                      const bool cracks,
                      const bool free_crack_faces)
   {
-    if (dynamic_driver)
-      return "pdlsm energy";
-    return cracks && !free_crack_faces ? "pdlsm energy" : "pdlsm";
+    const bool energy = dynamic_driver || (cracks && !free_crack_faces);
+    return energy ? "pdlsm energy" : "pdlsm";
   }
 
   template <int dim>
@@ -133,8 +132,7 @@ namespace pdfem
     if (model.free_crack_faces && plugins.model_name != "pdlsm")
       throw InputError(file,
                        "Peridynamics/Crack faces",
-                       "'free surface' is an option of the collocated "
-                       "pdlsm; " +
+                       "'free surface' is an option of the collocated pdlsm; " +
                          plugins.model_name + " treats crack faces itself",
                        "'cut bonds', or Peridynamics/Model = pdlsm");
     if (parameters != nullptr)
@@ -164,10 +162,8 @@ namespace pdfem
 
   namespace
   {
-    /// Remove the files pdfem writes (and only those) from @p folder:
-    /// history.csv, summary.json, nodes.csv, crack_paths.*, solution.pvd
-    /// and solution_*.vtu/.pvtu. parameters.prm, written for this run
-    /// before, and every other file stay.
+    /// Remove the run outputs pdfem writes (and only those) from @p folder;
+    /// parameters.prm, written for this run before, and other files stay.
     void
     remove_earlier_outputs(const std::string &folder)
     {
