@@ -93,7 +93,8 @@ namespace pdfem
     PDLSMEnergy<dim>::layout() const
     {
       Layout l;
-      l.family_elements = true;
+      l.family_elements  = true;
+      l.free_crack_faces = false; // cut families are refitted either way
       return l;
     }
 

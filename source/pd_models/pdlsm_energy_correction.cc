@@ -162,9 +162,9 @@ namespace pdfem
                   value.push_back(e->value());
                 }
             }
-          row_length = gather(row_length, MPI_INT, comm);
-          column     = gather(column, MPI_UNSIGNED, comm);
-          value      = gather(value, MPI_DOUBLE, comm);
+          row_length = gather(row_length, comm);
+          column     = gather(column, comm);
+          value      = gather(value, comm);
 
           std::string error;
           if (root)
@@ -242,26 +242,11 @@ namespace pdfem
         /// (empty elsewhere).
         template <typename T>
         static std::vector<T>
-        gather(const std::vector<T> &local, MPI_Datatype type, MPI_Comm comm)
+        gather(const std::vector<T> &local, const MPI_Comm &comm)
         {
-          const int        size = local.size();
-          std::vector<int> sizes(Utilities::MPI::n_mpi_processes(comm));
-          MPI_Gather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, comm);
-          std::vector<int> offsets(sizes.size(), 0);
-          for (std::size_t r = 1; r < sizes.size(); ++r)
-            offsets[r] = offsets[r - 1] + sizes[r - 1];
-          std::vector<T> all(Utilities::MPI::this_mpi_process(comm) == 0 ?
-                               offsets.back() + sizes.back() :
-                               0);
-          MPI_Gatherv(local.data(),
-                      size,
-                      type,
-                      all.data(),
-                      sizes.data(),
-                      offsets.data(),
-                      type,
-                      0,
-                      comm);
+          std::vector<T> all;
+          for (const auto &piece : Utilities::MPI::gather(comm, local, 0))
+            all.insert(all.end(), piece.begin(), piece.end());
           return all;
         }
       };

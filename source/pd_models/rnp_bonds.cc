@@ -227,6 +227,7 @@ namespace pdfem
         l.pairwise         = true;
         l.dirichlet_layer  = dirichlet_layer;
         l.nodal_body_force = true;
+        l.free_crack_faces = false; // bonds soften; no family is refitted
         return l;
       }
 

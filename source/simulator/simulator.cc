@@ -129,18 +129,19 @@ namespace pdfem
                                                 fracture.criterion != "none",
                                               model.free_crack_faces) :
                            model.name;
-    if (model.free_crack_faces && plugins.model_name != "pdlsm")
-      throw InputError(file,
-                       "Peridynamics/Crack faces",
-                       "'free surface' is an option of the collocated pdlsm; " +
-                         plugins.model_name + " treats crack faces itself",
-                       "'cut bonds', or Peridynamics/Model = pdlsm");
     if (parameters != nullptr)
       {
         plugins.model = PDModels::create<dim>(plugins.model_name, file);
         parameters->enter_subsection("Peridynamics");
         plugins.model->parse_parameters(*parameters, file);
         parameters->leave_subsection();
+        if (model.free_crack_faces && !plugins.model->layout().free_crack_faces)
+          throw InputError(file,
+                           "Peridynamics/Crack faces",
+                           "'free surface' is an option of the collocated "
+                           "pdlsm; " +
+                             plugins.model_name + " treats crack faces itself",
+                           "'cut bonds', or Peridynamics/Model = pdlsm");
       }
     const bool nonlinear_model = plugins.model && !plugins.model->linear();
     plugins.criterion =
@@ -189,12 +190,10 @@ namespace pdfem
   void
   Simulator<dim>::Impl::set_up()
   {
-    for (const auto &note : setup.notes)
-      if (root)
-        std::cerr << "pdfem: note: " << note << std::endl;
-    for (const auto &note : driver->notes())
-      if (root)
-        std::cerr << "pdfem: note: " << note << std::endl;
+    if (root)
+      for (const auto &notes : {setup.notes, driver->notes()})
+        for (const auto &note : notes)
+          std::cerr << "pdfem: note: " << note << std::endl;
 
     auto &tria = *setup.tria;
     if (!setup.restart_from.empty())

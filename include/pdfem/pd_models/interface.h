@@ -104,6 +104,11 @@ namespace pdfem
       /// and family_tangent() instead of forces() and tangent_row(), and
       /// scatters their blocks like FE cell contributions.
       bool family_elements = false;
+      /// The model reads `Peridynamics/Crack faces = free surface` (the
+      /// free_surfaces argument of bonds_changed()): PDLSM's refit with the
+      /// crack faces' boundary term. A model that treats crack faces its
+      /// own way says false, and the option is refused with it.
+      bool free_crack_faces = true;
     };
 
     /**
