@@ -580,6 +580,30 @@ namespace pdfem
     }
 
     template <int dim>
+    void
+    CoupledSystem<dim>::stiffness_row_bounds(const Vector &u,
+                                             const double  t,
+                                             Vector       &bounds)
+    {
+      Impl &s = *impl;
+      AssertThrow(!s.matrix_free,
+                  ExcMessage("row bounds need the assembled tangent"));
+      Vector r;
+      residual(u, t, r, true);
+      s.assemble_tangent();
+      s.tangent_stale = false;
+      bounds.reinit(s.owned, s.comm);
+      for (const auto i : s.owned)
+        {
+          double sum = 0.;
+          for (auto e = s.matrix.begin(i); e != s.matrix.end(i); ++e)
+            sum += std::abs(e->value());
+          bounds[i] = sum;
+        }
+      bounds.compress(VectorOperation::insert);
+    }
+
+    template <int dim>
     Drivers::StabilityReport
     CoupledSystem<dim>::check_stability()
     {
@@ -627,7 +651,10 @@ namespace pdfem
   template unsigned int             CoupledSystem<dim>::solve_linear(Vector &,        \
                                                          const Vector &); \
   template unsigned int             CoupledSystem<dim>::solve_linear_within(          \
-    Vector &, const Vector &, double);
+    Vector &, const Vector &, double);                                    \
+  template void CoupledSystem<dim>::stiffness_row_bounds(const Vector &,              \
+                                                         double,                      \
+                                                         Vector &);
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace Coupling

@@ -108,24 +108,22 @@ namespace pdfem
 
     template <int dim>
     unsigned long
-    CoupledSystem<dim>::break_bonds_if(
-      const std::function<bool(unsigned int, unsigned int)> &breaks)
+    CoupledSystem<dim>::Impl::break_bonds_where(
+      const std::function<bool(std::size_t, std::size_t)> &breaks)
     {
-      Impl                        &s = *impl;
-      PD::Families                &f = s.families;
-      unsigned long                n = 0;
-      std::vector<std::size_t>     changed;
-      typename Impl::FractureEvent event;
-      event.kind = Impl::FractureEvent::predicate;
+      PD::Families            &f = families;
+      unsigned long            n = 0;
+      std::vector<std::size_t> changed;
+      FractureEvent            event;
+      event.kind = FractureEvent::predicate;
       for (std::size_t o = 0; o < f.owners.size(); ++o)
         {
           const unsigned int k = f.owners[o];
-          if (s.no_fail[k])
+          if (no_fail[k])
             continue;
           bool lost = false;
           for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
-            if (f.intact[b] && !s.no_fail[f.members[b]] &&
-                breaks(k, f.members[b]))
+            if (f.intact[b] && !no_fail[f.members[b]] && breaks(o, b))
               {
                 f.intact[b] = 0;
                 event.bonds.push_back({{k, f.members[b]}});
@@ -135,13 +133,37 @@ namespace pdfem
           if (lost)
             changed.push_back(o);
         }
-      n = Utilities::MPI::sum(n, s.comm);
+      n = Utilities::MPI::sum(n, comm);
       if (n > 0)
         {
-          s.bonds_changed(changed, false);
-          s.events.push_back(std::move(event));
+          bonds_changed(changed, false);
+          events.push_back(std::move(event));
         }
       return n;
+    }
+
+    template <int dim>
+    unsigned long
+    CoupledSystem<dim>::break_bonds_if(
+      const std::function<bool(unsigned int, unsigned int)> &breaks)
+    {
+      const PD::Families &f = impl->families;
+      return impl->break_bonds_where(
+        [&](const std::size_t o, const std::size_t b) {
+          return breaks(f.owners[o], f.members[b]);
+        });
+    }
+
+    template <int dim>
+    unsigned long
+    CoupledSystem<dim>::accept_state(const Vector &u)
+    {
+      Impl &s = *impl;
+      s.import_ghosts(u, s.u_ghosted);
+      s.model->commit_state(s.nodal_field(s.u_ghosted));
+      return s.break_bonds_where([&s](std::size_t, const std::size_t b) {
+        return s.model->bond_failed(b);
+      });
     }
 
     template <int dim>
@@ -277,6 +299,7 @@ namespace pdfem
           state.put(prefix + "bonds", events[e].bonds);
           state.put(prefix + "min nodes", events[e].min_nodes);
         }
+      impl->model->save_state(state);
     }
 
     template <int dim>
@@ -333,6 +356,7 @@ namespace pdfem
                                  "event of unknown kind");
             }
         }
+      impl->model->restore_state(state);
       // As the checkpointed run did right after its checkpoint.
       forget_preconditioner();
     }
@@ -351,6 +375,9 @@ namespace pdfem
     const std::vector<Mesh::Crack<dim>> &);                                      \
   template unsigned long CoupledSystem<dim>::break_bonds_if(                     \
     const std::function<bool(unsigned int, unsigned int)> &);                    \
+  template unsigned long CoupledSystem<dim>::Impl::break_bonds_where(            \
+    const std::function<bool(std::size_t, std::size_t)> &);                      \
+  template unsigned long CoupledSystem<dim>::accept_state(const Vector &);       \
   template const std::vector<double>      &CoupledSystem<dim>::horizons() const; \
   template const PD::Families             &CoupledSystem<dim>::families() const; \
   template const PDModels::Interface<dim> &CoupledSystem<dim>::pd_model()        \

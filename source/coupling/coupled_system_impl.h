@@ -145,6 +145,12 @@ namespace pdfem
       void
       bonds_changed(const std::vector<std::size_t> &changed,
                     bool                            free_surfaces);
+      /// Break the intact bonds b of owners o (not no-fail) for which
+      /// @p breaks(o, b), as one predicate event; returns how many broke
+      /// over all ranks.
+      unsigned long
+      break_bonds_where(
+        const std::function<bool(std::size_t, std::size_t)> &breaks);
       /// After the decoupled owners changed: held DoFs listed again, the
       /// block-Jacobi inverse and the auxiliary matrix rebuilt by the next
       /// solve.

@@ -8,9 +8,10 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <chrono>
 #include <deque>
 #include <vector>
+
+#include "timing.h"
 
 namespace pdfem
 {
@@ -19,13 +20,6 @@ namespace pdfem
     namespace internal
     {
       using Vector = SystemInterface::Vector;
-      using clock  = std::chrono::steady_clock;
-
-      inline double
-      seconds_since(const clock::time_point &start)
-      {
-        return std::chrono::duration<double>(clock::now() - start).count();
-      }
 
       /// 1 for each held owned-local DoF.
       inline std::vector<char>

@@ -12,18 +12,44 @@
 #include <memory>
 #include <sstream>
 
+#include "timing.h"
+
 namespace pdfem
 {
   namespace Drivers
   {
     namespace
     {
-      using clock = std::chrono::steady_clock;
+      using internal::clock;
+      using internal::seconds_since;
 
-      double
-      seconds_since(const clock::time_point &start)
+      /**
+       * Solve K x = b with the last tangent; false (x not finite) where the
+       * linear solver fails: a singular tangent at a limit point of a
+       * softening model is a failed step like one that does not converge
+       * (the step is cut, or the path followed past the point). Other
+       * failures propagate. Adds the linear iterations to @p iterations.
+       */
+      bool
+      solve_or_fail(SystemInterface               &system,
+                    SystemInterface::Vector       &x,
+                    const SystemInterface::Vector &b,
+                    unsigned int                  *iterations = nullptr)
       {
-        return std::chrono::duration<double>(clock::now() - start).count();
+        try
+          {
+            const unsigned int n = system.solve_linear(x, b);
+            if (iterations != nullptr)
+              *iterations += n;
+          }
+        catch (const RunFailure &failure)
+          {
+            if (failure.exit_state != "singular matrix" &&
+                failure.exit_state != "linear solver diverged")
+              throw;
+            return false;
+          }
+        return std::isfinite(x.l2_norm());
       }
 
       /// v -> v with its prescribed entries zeroed: apply_dirichlet(v, 0)
@@ -72,9 +98,10 @@ namespace pdfem
           if (it == settings.max_iterations)
             return false;
           start = clock::now();
-          record.linear_iterations += system.solve_linear(du, r);
+          const bool ok =
+            solve_or_fail(system, du, r, &record.linear_iterations);
           time_spent.solve += seconds_since(start);
-          if (!std::isfinite(du.l2_norm()))
+          if (!ok)
             return false;
           ++record.newton_iterations;
 
@@ -146,8 +173,7 @@ namespace pdfem
               system.initialize_vector(q);
               system.residual(u, t, r, true);
               load_derivative(u, t, q);
-              system.solve_linear(dq, q);
-              if (std::isfinite(dq.l2_norm()))
+              if (solve_or_fail(system, dq, q))
                 u.add(t_new - t, dq);
             }
           system.apply_dirichlet(u, t_new);
@@ -326,7 +352,8 @@ namespace pdfem
       // predictor along K^-1 dr/dt (K of the last converged state)
       system.residual(last, lambda, r, true);
       load_derivative(last, lambda, q);
-      system.solve_linear(dq, q);
+      if (!solve_or_fail(system, dq, q))
+        return false;
       const double sign = (dq * increment) >= 0. ? 1. : -1.;
       const double dlam = sign * dl / dq.l2_norm();
       u                 = last;
@@ -348,8 +375,8 @@ namespace pdfem
           if (it == settings.max_iterations)
             return false;
           load_derivative(u, lam, q);
-          system.solve_linear(dr, r);
-          system.solve_linear(dq, q);
+          if (!solve_or_fail(system, dr, r) || !solve_or_fail(system, dq, q))
+            return false;
           // |Delta u + dr + dlam dq| = dl, Delta u = u - last (free DoFs:
           // dr and dq vanish on the prescribed ones)
           w = u;

@@ -181,6 +181,35 @@ namespace pdfem
                         "Dynamic runs: 'name: (x, y[, z])' separated by ';'; "
                         "the displacement of the node nearest to each point "
                         "goes into history.csv as u_<name>_<component>.");
+      prm.enter_subsection("Dynamic relaxation");
+      prm.declare_entry("Density factor",
+                        "1",
+                        Double(),
+                        "The fictitious density of every DoF is this times "
+                        "the Gershgorin bound 1/4 sum_j |K_ij| of the "
+                        "tangent at the start of each load step (> 0; >= 1 "
+                        "is stable for a linear model).");
+      prm.declare_entry("Damping",
+                        "adaptive",
+                        Anything(),
+                        "adaptive: c = 2 sqrt(u^T K_local u / u^T u) from the "
+                        "local Rayleigh quotient at every iteration (Kilic & "
+                        "Madenci); or a fixed coefficient 0 <= c < 2.");
+      prm.declare_entry("Ramp iterations",
+                        "0",
+                        Integer(0),
+                        "The load factor of a step goes from the previous "
+                        "step's to its own over this many iterations "
+                        "(prescribed displacements move at a finite rate, "
+                        "as in the paper's m/iteration loading; 0: at once, "
+                        "which can tear the bonds next to a moved boundary "
+                        "before the body follows).");
+      prm.declare_entry("Max iterations",
+                        "100000",
+                        Integer(1),
+                        "Relaxation iterations per load step before the run "
+                        "stops with exit state 'diverged'.");
+      prm.leave_subsection();
       prm.leave_subsection();
     }
 
@@ -214,6 +243,12 @@ namespace pdfem
       energy_tolerance        = prm.get_double("Energy tolerance");
       history_interval        = prm.get_integer("History interval");
       monitor_points_text     = prm.get("Monitor points");
+      prm.enter_subsection("Dynamic relaxation");
+      relaxation_density_factor  = prm.get_double("Density factor");
+      relaxation_damping         = trim(prm.get("Damping"));
+      relaxation_max_iterations  = prm.get_integer("Max iterations");
+      relaxation_ramp_iterations = prm.get_integer("Ramp iterations");
+      prm.leave_subsection();
       prm.leave_subsection();
       if (!(step_cut_factor > 0. && step_cut_factor < 1.))
         throw InputError(file,

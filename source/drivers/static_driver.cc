@@ -10,20 +10,14 @@
 #include <cmath>
 #include <sstream>
 
+#include "timing.h"
+
 namespace pdfem
 {
   namespace Drivers
   {
-    namespace
-    {
-      double
-      seconds_since(const std::chrono::steady_clock::time_point &start)
-      {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                             start)
-          .count();
-      }
-    } // namespace
+    using internal::clock;
+    using internal::seconds_since;
 
     StepRecord
     equilibrate(SystemInterface         &system,
@@ -34,7 +28,6 @@ namespace pdfem
                 const Settings          &settings,
                 DriverTimings           &time_spent)
     {
-      using clock = std::chrono::steady_clock;
       SystemInterface::Vector r, du;
       if (t_of_u > 0. && t != t_of_u)
         u *= t / t_of_u;
@@ -90,12 +83,12 @@ namespace pdfem
     {}
 
     void
-    StaticDriver::run(SystemInterface                               &system,
-                      SystemInterface::Vector                       &u,
-                      const std::function<void(const StepRecord &)> &on_step,
-                      const Resume                                  &resume)
+    run_load_steps(
+      const unsigned int                                             n_steps,
+      const Resume                                                  &resume,
+      const std::function<StepRecord(double, double, unsigned int)> &solve,
+      const std::function<void(const StepRecord &)>                 &on_step)
     {
-      const unsigned int n_steps = settings.load_steps;
       const unsigned int first =
         resume.from ? resume.from->get<unsigned int>("driver/next step") : 1;
       for (unsigned int step = first; step <= n_steps; ++step)
@@ -104,14 +97,24 @@ namespace pdfem
             resume.boundary([step](StateArchive &state) {
               state.put("driver/next step", step);
             });
-          on_step(equilibrate(system,
-                              u,
-                              double(step) / n_steps,
-                              double(step - 1) / n_steps,
-                              step,
-                              settings,
-                              time_spent));
+          on_step(
+            solve(double(step) / n_steps, double(step - 1) / n_steps, step));
         }
+    }
+
+    void
+    StaticDriver::run(SystemInterface                               &system,
+                      SystemInterface::Vector                       &u,
+                      const std::function<void(const StepRecord &)> &on_step,
+                      const Resume                                  &resume)
+    {
+      run_load_steps(
+        settings.load_steps,
+        resume,
+        [&](const double t, const double t_of_u, const unsigned int step) {
+          return equilibrate(system, u, t, t_of_u, step, settings, time_spent);
+        },
+        on_step);
     }
 
     namespace

@@ -14,6 +14,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pairwise_tools.h"
+
 namespace pdfem
 {
   namespace PDModels
@@ -60,19 +62,6 @@ namespace pdfem
                           "paper: g'(sqrt|xi| S)/sqrt|xi| (eq. 27, the one the "
                           "calibration holds for); prototype: g'/|xi| (the "
                           "Python prototype, for regression only).");
-        prm.declare_entry("Nodal volumes",
-                          "cells",
-                          Patterns::Selection("cells|uniform"),
-                          "cells: sum of V_cell / n_vertices; uniform: h^dim "
-                          "for every node (the paper's lattice), h the largest "
-                          "cell size.");
-        prm.declare_entry("Dirichlet layer",
-                          "1",
-                          Patterns::Double(0.),
-                          "Prescribed displacements act on every node within "
-                          "this many horizons of the named boundary (the "
-                          "nonlocal boundary layer); 0: the boundary's nodes "
-                          "only.");
         prm.declare_entry("Tangent",
                           "analytic",
                           Patterns::Selection("analytic|finite difference"),
@@ -88,6 +77,7 @@ namespace pdfem
           "partition: each bond is weighted by the mean PD share of its two "
           "nodes' volumes, so that bonds and FE cells split the energy "
           "(doc/theory.md, RNP coupling; smaller ghost forces).");
+        declare_lattice_parameters(prm);
         prm.leave_subsection();
       }
     } // namespace
@@ -197,24 +187,7 @@ namespace pdfem
           settings.horizon = 1.; // no PD node anywhere: no bond either
         rnp = std::make_unique<RNP<dim>>(settings);
 
-        // The bonds' volumes: the PD cells' shares (every cell's with FE
-        // nodes in the families: an interface node stands for material on
-        // both sides), or h^dim (the paper's lattice); the PD share
-        // w_k = V_k^pd / V_k of each node for the energy partition.
-        const auto        &V_all = *r.volume;
-        const auto        &V_pd  = *r.pd_volume;
-        const unsigned int n     = V_all.size();
-        bond_volume.assign(n, 0.);
-        pd_share.assign(n, 0.);
-        for (unsigned int k = 0; k < n; ++k)
-          {
-            pd_share[k]       = V_all[k] > 0. ? V_pd[k] / V_all[k] : 0.;
-            const bool member = V_pd[k] > 0. || r.fe_nodes_in_families;
-            bond_volume[k] =
-              !member         ? 0. :
-              uniform_volumes ? std::pow(r.spacing, dim) :
-                                (r.fe_nodes_in_families ? V_all[k] : V_pd[k]);
-          }
+        pairwise_bond_volumes(r, uniform_volumes, bond_volume, pd_share);
         const double shortest = r.spacing > 0. ? r.spacing : 1.;
         fd_step               = 1e-6 * shortest;
       }
@@ -222,13 +195,7 @@ namespace pdfem
       Layout
       layout() const override
       {
-        Layout l;
-        l.uniform_horizon  = true;
-        l.pairwise         = true;
-        l.dirichlet_layer  = dirichlet_layer;
-        l.nodal_body_force = true;
-        l.free_crack_faces = false; // bonds soften; no family is refitted
-        return l;
+        return pairwise_layout(dirichlet_layer);
       }
 
       /// The PD material of node k: its bond volume's PD share.
@@ -305,31 +272,18 @@ namespace pdfem
             }
       }
 
-      /// A linear fit of the bonds' deformation: grad u = (sum w eta (x)
-      /// xi) (sum w xi (x) xi)^-1 with w = V_m J / |xi|^2 (output only:
-      /// a bond model has no gradient of its own).
+      /// A linear fit of the bonds' deformation (fitted_gradient(), with
+      /// the influence function as weight).
       Tensor<2, dim>
       displacement_gradient(const std::size_t      o,
                             const NodalField<dim> &u) const override
       {
-        const PD::Families  &f  = *this->region.families;
-        const auto          &x  = *this->region.position;
-        const auto          &V  = *this->region.volume;
-        const unsigned int   k  = f.owners[o];
-        const Tensor<1, dim> uk = u[k];
-        Tensor<2, dim>       A, B;
-        for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
-          if (f.intact[j])
-            {
-              const unsigned int   m  = f.members[j];
-              const Tensor<1, dim> xi = x[m] - x[k];
-              const double w = V[m] * rnp->influence(xi.norm()) / (xi * xi);
-              A += w * outer_product(u[m] - uk, xi);
-              B += w * outer_product(xi, xi);
-            }
-        if (std::abs(determinant(B)) <= 1e-12 * std::pow(trace(B), dim))
-          return Tensor<2, dim>();
-        return A * invert(B);
+        const auto &f = *this->region.families;
+        const auto &x = *this->region.position;
+        return fitted_gradient(this->region, o, u, [&](const std::size_t j) {
+          const unsigned int k = f.owners[o];
+          return rnp->influence((x[f.members[j]] - x[k]).norm());
+        });
       }
 
       /// max over the bonds of |S| sqrt|xi| / r_c (specs/000 (18)): 1

@@ -351,11 +351,12 @@ namespace pdfem
   Simulator<dim>::Impl::after_equilibrium(const Drivers::StepRecord &record,
                                           const bool allow_growth)
   {
-    const auto start      = clock::now();
-    step_record           = record;
-    n_steps               = record.step;
-    load_factor           = record.load_factor;
-    const bool fields_due = setup.write_every > 0 &&
+    const auto          start    = clock::now();
+    const unsigned long degraded = accept_model_state(u);
+    step_record                  = record;
+    n_steps                      = record.step;
+    load_factor                  = record.load_factor;
+    const bool fields_due        = setup.write_every > 0 &&
                             record.step % setup.write_every == 0 &&
                             record.step < setup.driver.load_steps;
     // Nodal results: now if the criterion or the fields need them, else
@@ -391,6 +392,8 @@ namespace pdfem
     check.grew                = assessment.broken_bonds > 0;
     check.critical_load_ratio = assessment.critical_load_ratio;
     check.separated           = assessment.pieces > 1;
+    if (degraded > 0 && !cracks)
+      separated_by_model(check);
     if (cracks && allow_growth && !check.separated)
       separated_by_load(record.load_factor, check);
     // The PD region follows the cracks: a new system on the same mesh and
@@ -414,53 +417,13 @@ namespace pdfem
         coupled->break_bonds(grown);
         cracks->attach(*coupled);
       }
-    // Fragments cut loose (a few PD nodes bonded only to each other) are
-    // held where they are: unheld, they make the next solve singular.
     if (check.grew)
-      {
-        const unsigned long held = coupled->hold_fragments(
-          Fracture::CrackGrowth<dim>::smallest_piece(results->position.size()));
-        if (held > 0 && progress)
-          *progress << "  " << held
-                    << " PD nodes of fragments cut loose are held where "
-                       "they are\n";
-      }
+      hold_fragments();
     // A resumable driver stops at its next step boundary, after a
     // checkpoint (step_boundary()).
     if (!driver->resumable())
       stop_if_interrupted(StopOnSignals::stop_requested(comm));
     return check;
-  }
-
-  template <int dim>
-  void
-  Simulator<dim>::Impl::separated_by_load(const double          t,
-                                          Drivers::GrowthCheck &check)
-  {
-    // The grips' secant stiffness: the reactions over the largest
-    // prescribed displacement (none: load control, where a cut body has no
-    // equilibrium instead). Below 1e-3 of its peak the body no longer
-    // carries load, even if a few bonds still link its pieces (a strip
-    // cut across by the max principal stress criterion kept 3e-5 of its
-    // peak through a handful of bonds; issue 19).
-    Drivers::SystemInterface::Vector prescribed;
-    coupled->initialize_vector(prescribed);
-    coupled->apply_dirichlet(prescribed, t);
-    const double displacement = prescribed.linfty_norm();
-    if (!(displacement > 0.))
-      return;
-    double reaction = 0.;
-    for (const auto &r : coupled->reactions())
-      reaction += r.norm();
-    const double stiffness = reaction / displacement;
-    peak_grip_stiffness    = std::max(peak_grip_stiffness, stiffness);
-    if (stiffness < 1e-3 * peak_grip_stiffness)
-      {
-        check.separated = true;
-        check.separation =
-          "the grips carry " + number(100. * stiffness / peak_grip_stiffness) +
-          " % of the load per displacement they carried at the peak";
-      }
   }
 
   template <int dim>
@@ -482,14 +445,15 @@ namespace pdfem
     double)
   {
     results.reset();
+    const bool degraded = accept_model_state(u_now) > 0;
     if (!cracks)
-      return false;
+      return degraded;
     const auto start = clock::now();
     update_results(u_now);
     assessment = criterion->evaluate(*cracks, *coupled, *results, true);
     Fracture::CrackGrowth<dim>::count_pieces(assessment, *coupled, *results);
     criterion_time += seconds_since(start);
-    return assessment.broken_bonds > 0;
+    return degraded || assessment.broken_bonds > 0;
   }
 
   template <int dim>

@@ -99,10 +99,23 @@ namespace pdfem
     Drivers::GrowthCheck
     after_equilibrium(const Drivers::StepRecord &record,
                       bool                       allow_growth) override;
+    // ---- bonds breaking besides the criterion (simulator_fracture.cc)
     /// Set @p check separated (with its reason) when the grips' secant
     /// stiffness at load factor @p t fell below 1e-3 of its peak.
     void
     separated_by_load(double t, Drivers::GrowthCheck &check);
+    /// The state @p u_now was accepted: the PD model records its history
+    /// and the bonds it failed break (CoupledSystem::accept_state());
+    /// fragments cut loose are then held. Returns the bonds that broke.
+    unsigned long
+    accept_model_state(const Drivers::SystemInterface::Vector &u_now);
+    /// Hold the fragments cut loose (a progress line says how many nodes).
+    void
+    hold_fragments();
+    /// Set @p check separated when the bonds failed by the model cut the
+    /// body into pieces.
+    void
+    separated_by_model(Drivers::GrowthCheck &check) const;
     bool
     after_time_step(const Drivers::SystemInterface::Vector &u_now,
                     double                                  t) override;

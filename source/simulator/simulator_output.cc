@@ -162,6 +162,8 @@ namespace pdfem
       criterion->write_final(*cracks, assessment, json);
     for (const auto &p : postprocessors)
       p->write_final(json);
+    if (!driver->dynamic()) // dynamic ones: the energy balance's section
+      driver->write_summary(json);
     json.end_object();
     if (initial_size.n_pd_cells > 0)
       {

@@ -39,74 +39,6 @@ namespace
                        {"RNP/beta", std::to_string(beta)}});
   }
 
-  /// max |tangent row - central differences of the force rows| relative to
-  /// the largest tangent entry, over every owner and intact bond.
-  double
-  tangent_error(const PDModels::Interface<2> &model,
-                const PD::Families           &f,
-                Field<>                      &u,
-                const double                  h)
-  {
-    const std::size_t         n = f.owners.size();
-    std::vector<double>       fp(2 * n), fm(2 * n);
-    std::vector<Tensor<2, 2>> blocks;
-    double                    error = 0., scale = 0.;
-    for (std::size_t o = 0; o < n; ++o)
-      {
-        model.tangent_row(o, u.field(), blocks);
-        std::vector<unsigned int> columns{f.owners[o]};
-        for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
-          if (f.intact[j])
-            columns.push_back(f.members[j]);
-        EXPECT_EQ(blocks.size(), columns.size());
-        for (std::size_t b = 0; b < columns.size(); ++b)
-          for (unsigned int c = 0; c < 2; ++c)
-            {
-              double &x = u.values[2 * columns[b] + c];
-              x += h;
-              model.forces(o, o + 1, u.field(), fp.data());
-              x -= 2. * h;
-              model.forces(o, o + 1, u.field(), fm.data());
-              x += h;
-              for (unsigned int r = 0; r < 2; ++r)
-                {
-                  const double fd = (fp[2 * o + r] - fm[2 * o + r]) / (2. * h);
-                  error = std::max(error, std::abs(fd - blocks[b][r][c]));
-                  scale = std::max(scale, std::abs(blocks[b][r][c]));
-                }
-            }
-      }
-    EXPECT_GT(scale, 0.);
-    return error / scale;
-  }
-
-  /// u = @p amplitude times a smooth field plus a random part.
-  void
-  deform(const Coupling::CoupledSystem<2> &system,
-         Field<>                          &u,
-         const double                      amplitude)
-  {
-    std::mt19937                           random(3);
-    std::uniform_real_distribution<double> noise(-0.2, 0.2);
-    for (unsigned int k = 0; k < u.index.size(); ++k)
-      {
-        const Point<2> p = system.node_position(k);
-        u.values[2 * k]  = amplitude * (p[0] * p[1] + noise(random));
-        u.values[2 * k + 1] =
-          amplitude * (0.5 * p[0] * p[0] - p[1] + noise(random));
-      }
-  }
-
-  /// Break every fifth intact bond of the PD nodes (both directions).
-  void
-  break_some_bonds(Coupling::CoupledSystem<2> &system)
-  {
-    system.break_bonds_if([](const unsigned int k, const unsigned int m) {
-      return (k + m) % 5 == 0;
-    });
-    EXPECT_GT(system.families().n_broken(), 0u);
-  }
-
   TEST(PDModels, RegistryHasTheBuiltInModels)
   {
     const auto names = PDModels::registry<2>().names();
@@ -157,55 +89,62 @@ namespace
         }
   }
 
-  TEST(PDModels, RNPTermIsSymmetricAndSelfEquilibrated)
+  TEST(PDModels, PairwiseTermsAreSymmetricAndSelfEquilibrated)
   {
-    for (const bool broken : {false, true})
-      {
-        auto  model = make_rnp();
-        Plate plate(model); // all PD
-        if (broken)
-          break_some_bonds(*plate.system);
-        const auto    &f = plate.system->families();
-        const unsigned n = plate.system->size().n_nodes;
-        Field<>        u(n);
-        deform(*plate.system, u, 0.3);
-        // Dense K of the PD term from the tangent rows.
-        std::vector<double>       K(4 * n * n, 0.), forces(2 * f.owners.size());
-        std::vector<Tensor<2, 2>> blocks;
-        double                    scale = 0.;
-        for (std::size_t o = 0; o < f.owners.size(); ++o)
-          {
-            model->tangent_row(o, u.field(), blocks);
-            std::vector<unsigned int> columns{f.owners[o]};
-            for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
-              if (f.intact[j])
-                columns.push_back(f.members[j]);
-            for (std::size_t b = 0; b < columns.size(); ++b)
-              for (unsigned int r = 0; r < 2; ++r)
-                for (unsigned int c = 0; c < 2; ++c)
-                  {
-                    K[(2 * f.owners[o] + r) * 2 * n + 2 * columns[b] + c] +=
-                      blocks[b][r][c];
-                    scale = std::max(scale, std::abs(blocks[b][r][c]));
-                  }
-          }
-        double asymmetry = 0.;
-        for (unsigned int i = 0; i < 2 * n; ++i)
-          for (unsigned int j = 0; j < i; ++j)
-            asymmetry = std::max(asymmetry,
-                                 std::abs(K[i * 2 * n + j] - K[j * 2 * n + i]));
-        EXPECT_LT(asymmetry, 1e-12 * scale);
-        model->forces(0, f.owners.size(), u.field(), forces.data());
-        double sum[2] = {0., 0.}, largest = 0.;
-        for (std::size_t o = 0; o < f.owners.size(); ++o)
-          for (unsigned int c = 0; c < 2; ++c)
+    for (const std::string name : {"rnp", "bond based"})
+      for (const bool broken : {false, true})
+        {
+          auto  model = name == "rnp" ?
+                          make_rnp() :
+                          make_model("bond based",
+                                    {{"Bond based/Degradation", "tanh"},
+                                      {"Bond based/Onset stretch", "0.05"},
+                                      {"Bond based/Critical stretch", "0.5"}});
+          Plate plate(model); // all PD
+          if (broken)
+            break_some_bonds(*plate.system);
+          const auto    &f = plate.system->families();
+          const unsigned n = plate.system->size().n_nodes;
+          Field<>        u(n);
+          deform(*plate.system, u, 0.3);
+          // Dense K of the PD term from the tangent rows.
+          std::vector<double> K(4 * n * n, 0.), forces(2 * f.owners.size());
+          std::vector<Tensor<2, 2>> blocks;
+          double                    scale = 0.;
+          for (std::size_t o = 0; o < f.owners.size(); ++o)
             {
-              sum[c] += forces[2 * o + c];
-              largest = std::max(largest, std::abs(forces[2 * o + c]));
+              model->tangent_row(o, u.field(), blocks);
+              std::vector<unsigned int> columns{f.owners[o]};
+              for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+                if (f.intact[j])
+                  columns.push_back(f.members[j]);
+              for (std::size_t b = 0; b < columns.size(); ++b)
+                for (unsigned int r = 0; r < 2; ++r)
+                  for (unsigned int c = 0; c < 2; ++c)
+                    {
+                      K[(2 * f.owners[o] + r) * 2 * n + 2 * columns[b] + c] +=
+                        blocks[b][r][c];
+                      scale = std::max(scale, std::abs(blocks[b][r][c]));
+                    }
             }
-        EXPECT_GT(largest, 0.);
-        EXPECT_LT(std::abs(sum[0]) + std::abs(sum[1]), 1e-12 * largest * n);
-      }
+          double asymmetry = 0.;
+          for (unsigned int i = 0; i < 2 * n; ++i)
+            for (unsigned int j = 0; j < i; ++j)
+              asymmetry =
+                std::max(asymmetry,
+                         std::abs(K[i * 2 * n + j] - K[j * 2 * n + i]));
+          EXPECT_LT(asymmetry, 1e-12 * scale);
+          model->forces(0, f.owners.size(), u.field(), forces.data());
+          double sum[2] = {0., 0.}, largest = 0.;
+          for (std::size_t o = 0; o < f.owners.size(); ++o)
+            for (unsigned int c = 0; c < 2; ++c)
+              {
+                sum[c] += forces[2 * o + c];
+                largest = std::max(largest, std::abs(forces[2 * o + c]));
+              }
+          EXPECT_GT(largest, 0.);
+          EXPECT_LT(std::abs(sum[0]) + std::abs(sum[1]), 1e-12 * largest * n);
+        }
   }
 } // namespace
 

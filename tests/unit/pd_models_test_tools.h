@@ -6,6 +6,7 @@
 #define PDFEM_TESTS_UNIT_PD_MODELS_TEST_TOOLS_H
 
 #include <pdfem/coupling/coupled_system.h>
+#include <pdfem/pd/families.h>
 #include <pdfem/pd_models/interface.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -14,11 +15,16 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 namespace
 {
@@ -100,6 +106,74 @@ namespace
     std::vector<double>                        values;
     std::vector<std::array<unsigned int, dim>> index;
   };
+
+  /// max |tangent row - central differences of the force rows| relative to
+  /// the largest tangent entry, over every owner and intact bond.
+  inline double
+  tangent_error(const PDModels::Interface<2> &model,
+                const PD::Families           &f,
+                Field<>                      &u,
+                const double                  h)
+  {
+    const std::size_t         n = f.owners.size();
+    std::vector<double>       fp(2 * n), fm(2 * n);
+    std::vector<Tensor<2, 2>> blocks;
+    double                    error = 0., scale = 0.;
+    for (std::size_t o = 0; o < n; ++o)
+      {
+        model.tangent_row(o, u.field(), blocks);
+        std::vector<unsigned int> columns{f.owners[o]};
+        for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+          if (f.intact[j])
+            columns.push_back(f.members[j]);
+        EXPECT_EQ(blocks.size(), columns.size());
+        for (std::size_t b = 0; b < columns.size(); ++b)
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              double &x = u.values[2 * columns[b] + c];
+              x += h;
+              model.forces(o, o + 1, u.field(), fp.data());
+              x -= 2. * h;
+              model.forces(o, o + 1, u.field(), fm.data());
+              x += h;
+              for (unsigned int r = 0; r < 2; ++r)
+                {
+                  const double fd = (fp[2 * o + r] - fm[2 * o + r]) / (2. * h);
+                  error = std::max(error, std::abs(fd - blocks[b][r][c]));
+                  scale = std::max(scale, std::abs(blocks[b][r][c]));
+                }
+            }
+      }
+    EXPECT_GT(scale, 0.);
+    return error / scale;
+  }
+
+  /// u = @p amplitude times a smooth field plus a random part.
+  inline void
+  deform(const Coupling::CoupledSystem<2> &system,
+         Field<>                          &u,
+         const double                      amplitude)
+  {
+    std::mt19937                           random(3);
+    std::uniform_real_distribution<double> noise(-0.2, 0.2);
+    for (unsigned int k = 0; k < u.index.size(); ++k)
+      {
+        const Point<2> p = system.node_position(k);
+        u.values[2 * k]  = amplitude * (p[0] * p[1] + noise(random));
+        u.values[2 * k + 1] =
+          amplitude * (0.5 * p[0] * p[0] - p[1] + noise(random));
+      }
+  }
+
+  /// Break every fifth intact bond of the PD nodes (both directions).
+  inline void
+  break_some_bonds(Coupling::CoupledSystem<2> &system)
+  {
+    system.break_bonds_if([](const unsigned int k, const unsigned int m) {
+      return (k + m) % 5 == 0;
+    });
+    EXPECT_GT(system.families().n_broken(), 0u);
+  }
 } // namespace
 
 #endif

@@ -291,6 +291,8 @@ namespace pdfem
       solve_linear_within(Vector       &du,
                           const Vector &r,
                           double        allowed_residual) override;
+      void
+      stiffness_row_bounds(const Vector &u, double t, Vector &bounds) override;
 
       /// @name Dynamics (Drivers::DynamicSystemInterface)
       /// @{
@@ -415,6 +417,16 @@ namespace pdfem
       unsigned long
       break_bonds_if(
         const std::function<bool(unsigned int, unsigned int)> &breaks);
+
+      /**
+       * The state @p u was accepted (an equilibrium, a time step): a PD
+       * model with a history records it (PDModels::Interface::
+       * commit_state()), and the bonds it reports failed for good break
+       * as with break_bonds_if(). Returns how many broke, over all ranks.
+       * Collective.
+       */
+      unsigned long
+      accept_state(const Vector &u);
 
       /// This rank's families and their bond states, read-only (bonds break
       /// only through break_bonds() and break_bonds_if()); a bond between

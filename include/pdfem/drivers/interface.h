@@ -223,7 +223,8 @@ namespace pdfem
       virtual void
       run(Host &host) = 0;
 
-      /// Add the driver's own members to summary.json's "final" object.
+      /// Add the driver's own members to summary.json: its "final" object
+      /// (static drivers) or its "dynamics" section (dynamic ones).
       virtual void
       write_summary(IO::JsonWriter &json) const;
 

@@ -82,6 +82,22 @@ namespace pdfem
       std::vector<MonitorPoint> monitor_points;
       /// @}
 
+      /// @name Dynamic relaxation (subsection Driver/Dynamic relaxation)
+      /// @{
+      /// The fictitious density is this times the Gershgorin bound
+      /// 1/4 sum_j |K_ij| of the tangent (>= 1: stable for a linear model).
+      double relaxation_density_factor = 1.;
+      /// "adaptive" (the local Rayleigh quotient) or a fixed damping
+      /// coefficient in [0, 2).
+      std::string relaxation_damping = "adaptive";
+      /// Relaxation iterations per load step before the run stops with
+      /// exit state 'diverged'.
+      unsigned int relaxation_max_iterations = 100000;
+      /// The load of a step goes from the previous step's to its own over
+      /// this many iterations (the boundary moves at a finite rate; 0: at
+      /// once).
+      unsigned int relaxation_ramp_iterations = 0;
+      /// @}
       /// The texts of 'Time step' and 'Monitor points' as given (parsed
       /// by check_time_stepping()).
       std::string time_step_text;

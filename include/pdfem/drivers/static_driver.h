@@ -55,6 +55,19 @@ namespace pdfem
                 DriverTimings           &time_spent);
 
     /**
+     * The load steps of a static driver: t = k / @p n_steps for k from 1
+     * (or from the step @p resume restarts at), a checkpoint boundary
+     * before every step but the first one run, and
+     * @p on_step(@p solve(t, t_previous, k)) for each.
+     */
+    void
+    run_load_steps(
+      unsigned int                                                   n_steps,
+      const Resume                                                  &resume,
+      const std::function<StepRecord(double, double, unsigned int)> &solve,
+      const std::function<void(const StepRecord &)>                 &on_step);
+
+    /**
      * Static equilibrium: the load factor t goes from 0 to 1 in `Load steps`
      * equal increments; at each, the prescribed DoFs are set to their values
      * at t and Newton iterations K du = r, u += du run until

@@ -2,6 +2,8 @@
 #ifndef PDFEM_DRIVERS_SYSTEM_INTERFACE_H
 #define PDFEM_DRIVERS_SYSTEM_INTERFACE_H
 
+#include <stdexcept>
+
 namespace dealii
 {
   namespace TrilinosWrappers
@@ -70,6 +72,21 @@ namespace pdfem
       {
         (void)allowed_residual;
         return solve_linear(du, r);
+      }
+
+      /**
+       * The Gershgorin bound of every owned row of the tangent K(u) at load
+       * factor @p t: @p bounds_i = sum_j |K_ij| (held rows: their
+       * diagonal). Dynamic relaxation's fictitious density
+       * (DynamicRelaxation). By default not provided (std::logic_error).
+       */
+      virtual void
+      stiffness_row_bounds(const Vector &u, double t, Vector &bounds)
+      {
+        (void)u;
+        (void)t;
+        (void)bounds;
+        throw std::logic_error("this system gives no bounds of its tangent");
       }
     };
   } // namespace Drivers

@@ -26,6 +26,8 @@ namespace dealii
 
 namespace pdfem
 {
+  class StateArchive;
+
   namespace PD
   {
     struct Families;
@@ -287,6 +289,48 @@ namespace pdfem
       /// none.
       virtual std::vector<std::pair<std::string, double>>
       constants() const;
+
+      /**
+       * @name Models with a history (a bond's largest stretch so far)
+       *
+       * The forces of such a model depend on u and on the states accepted
+       * before it. The system calls commit_state() with every accepted
+       * state (an equilibrium of a static driver, a step of a time
+       * integrator), serially on each rank, and then breaks the bonds for
+       * which bond_failed() is true (they carry no force at any later
+       * state: the broken-bond count, the pieces and the held fragments
+       * follow them). save_state() and restore_state() put the history
+       * into a checkpoint (this rank's families). The defaults: no
+       * history.
+       */
+      /// @{
+      virtual void
+      commit_state(const NodalField<dim> &u)
+      {
+        (void)u;
+      }
+
+      /// Does bond @p j (an index into families.members) carry no force
+      /// for good, after the last commit_state()?
+      virtual bool
+      bond_failed(std::size_t j) const
+      {
+        (void)j;
+        return false;
+      }
+
+      virtual void
+      save_state(StateArchive &state) const
+      {
+        (void)state;
+      }
+
+      virtual void
+      restore_state(const StateArchive &state)
+      {
+        (void)state;
+      }
+      /// @}
 
     protected:
       /// The region of initialize().

@@ -1,0 +1,559 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The PD model "bond based": the finite-deformation bond-based model with
+// the smooth tanh degradation of Hu et al. (specs/003 §1, §3) as a term of
+// the coupled system.
+#include <pdfem/base/config.h>
+#include <pdfem/base/exceptions.h>
+#include <pdfem/base/parameter_tools.h>
+#include <pdfem/base/state_archive.h>
+#include <pdfem/pd/families.h>
+#include <pdfem/pd_models/bond_based.h>
+#include <pdfem/pd_models/interface.h>
+#include <pdfem/pd_models/rnp.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "pairwise_tools.h"
+
+namespace pdfem
+{
+  namespace PDModels
+  {
+    using namespace dealii;
+
+    // ------------------------------------------------------- the bond law
+    double
+    BondDegradation::factor(const double s) const
+    {
+      if (!active || s <= onset)
+        return 1.;
+      if (s >= critical)
+        return 0.;
+      return 0.5 * (1. - std::tanh(rate * (onset + critical - 2. * s) /
+                                   (onset - critical)));
+    }
+
+    double
+    BondDegradation::derivative(const double s) const
+    {
+      if (!active || s <= onset || s >= critical)
+        return 0.;
+      const double t =
+        std::tanh(rate * (onset + critical - 2. * s) / (onset - critical));
+      return rate / (onset - critical) * (1. - t * t);
+    }
+
+    double
+    bond_based_micromodulus(const double E,
+                            const double delta,
+                            const int    dim,
+                            const bool   plane_strain)
+    {
+      if (dim == 3)
+        return 12. * E / (M_PI * std::pow(delta, 4));
+      return (plane_strain ? 48. / (5. * M_PI) : 9. / M_PI) * E /
+             std::pow(delta, 3);
+    }
+
+    template <int dim>
+    double
+    BondBasedBond<dim>::stretch(const Tensor<1, dim> &xi,
+                                const Tensor<1, dim> &eta)
+    {
+      const double L = xi.norm();
+      return ((xi + eta).norm() - L) / L;
+    }
+
+    template <int dim>
+    Tensor<1, dim>
+    BondBasedBond<dim>::force(const Tensor<1, dim> &xi,
+                              const Tensor<1, dim> &eta,
+                              const double          c_T)
+    {
+      const Tensor<1, dim> r = xi + eta;
+      const double         L = xi.norm(), l = r.norm();
+      // c T s r / l with s = (l - L) / L: c T (1 / L - 1 / l) r.
+      return c_T * (1. / L - 1. / l) * r;
+    }
+
+    template <int dim>
+    Tensor<2, dim>
+    BondBasedBond<dim>::stiffness(const Tensor<1, dim> &xi,
+                                  const Tensor<1, dim> &eta,
+                                  const double          c,
+                                  const double          T,
+                                  const double          dT)
+    {
+      const Tensor<1, dim> r = xi + eta;
+      const double         L = xi.norm(), l = r.norm();
+      const double         s     = (l - L) / L;
+      const double         axial = c * (T + s * dT) / L;
+      const double         cross = c * T * s / l;
+      Tensor<2, dim>       K;
+      for (unsigned int p = 0; p < dim; ++p)
+        for (unsigned int q = 0; q < dim; ++q)
+          K[p][q] =
+            (axial - cross) * r[p] * r[q] / (l * l) + (p == q ? cross : 0.);
+      return K;
+    }
+
+    // ------------------------------------------------------------ the model
+    namespace
+    {
+      /// `subsection Bond based` inside `subsection Peridynamics`.
+      void
+      declare_bond_based_parameters(ParameterHandler &prm)
+      {
+        prm.enter_subsection("Bond based");
+        prm.declare_entry("Degradation",
+                          "none",
+                          Patterns::Selection("none|tanh"),
+                          "none: bonds never soften; tanh: the smooth "
+                          "degradation T(s) of specs/003 eq. 12 between the "
+                          "onset stretch s_m and the critical stretch s_c.");
+        prm.declare_entry("Onset stretch",
+                          "0",
+                          Patterns::Double(),
+                          "s_m: the stretch at which bonds start to soften "
+                          "(tanh).");
+        prm.declare_entry("Critical stretch",
+                          "0",
+                          Patterns::Double(),
+                          "s_c > s_m: the stretch at which a bond carries no "
+                          "force (tanh); it then breaks for good.");
+        prm.declare_entry("Degradation rate",
+                          "3",
+                          Patterns::Double(),
+                          "beta > 0 in T(s): how sharply bonds soften (the "
+                          "paper: 3).");
+        prm.declare_entry(
+          "Damage history",
+          "irreversible",
+          Patterns::Selection("irreversible|reversible"),
+          "irreversible: T follows the largest stretch of every accepted "
+          "state (an unloading bond keeps its softening, specs/003 §1.4); "
+          "reversible: T follows the current stretch.");
+        prm.declare_entry("Volume correction",
+                          "partial volumes",
+                          Patterns::Selection("partial volumes|none"),
+                          "partial volumes: v = (delta + h/2 - |xi|) / h for "
+                          "bonds within h/2 of the horizon (specs/003 §1.5); "
+                          "none: v = 1.");
+        prm.declare_entry("Surface correction",
+                          "energy",
+                          Patterns::Selection("energy|none"),
+                          "energy: every bond is scaled by mu_km so that a "
+                          "uniaxial strain gives the continuum energy at "
+                          "every node (Madenci & Oterkus, specs/003 §1.5); "
+                          "none: mu = 1.");
+        declare_lattice_parameters(prm);
+        prm.leave_subsection();
+      }
+    } // namespace
+
+    /**
+     * The bond-based model (specs/003 §1, §3) as a term of the coupled
+     * system:
+     *
+     *   F_k = -V_k sum_m c mu_km v_km V_m T(s_km) s_km n_km
+     *
+     * over the intact bonds, n = (xi + eta) / |xi + eta|, s the stretch,
+     * c the micromodulus of bond_based_micromodulus() for the one horizon
+     * delta = m h, v the partial-volume factor, mu the energy surface
+     * correction (mu_km = mu_mk), V the bond volumes (pairwise_bond_volumes())
+     * and T the degradation of BondDegradation, at the bond's largest
+     * stretch of the accepted states (Damage history = irreversible) or at
+     * its current one. Pairwise and symmetric: the tangent
+     *
+     *   dF_k/du_m = -V_k mu v V_m dt/du_m,  dF_k/du_k = -sum_m dF_k/du_m
+     *
+     * (BondBasedBond::stiffness(), T' only on bonds stretched beyond their
+     * largest stretch) is symmetric, indefinite where bonds soften or are
+     * compressed. Bonds whose largest stretch reached s_c break for good
+     * (bond_failed()). The Poisson's ratio must be the model's (1/3 plane
+     * stress, 1/4 plane strain and 3D).
+     */
+    template <int dim>
+    class BondBased : public Interface<dim>
+    {
+    public:
+      void
+      parse_parameters(ParameterHandler &prm, const std::string &file) override
+      {
+        prm.enter_subsection("Bond based");
+        degradation.active   = prm.get("Degradation") == "tanh";
+        degradation.onset    = prm.get_double("Onset stretch");
+        degradation.critical = prm.get_double("Critical stretch");
+        degradation.rate     = prm.get_double("Degradation rate");
+        irreversible         = prm.get("Damage history") == "irreversible";
+        volume_correction  = prm.get("Volume correction") == "partial volumes";
+        surface_correction = prm.get("Surface correction") == "energy";
+        uniform_volumes    = prm.get("Nodal volumes") == "uniform";
+        dirichlet_layer    = prm.get_double("Dirichlet layer");
+        prm.leave_subsection();
+        if (!degradation.active)
+          return;
+        const std::string section = "Peridynamics/Bond based/";
+        if (!(degradation.onset > 0.))
+          throw InputError(
+            file,
+            section + "Onset stretch",
+            "s_m = " + number(degradation.onset) + " is not positive",
+            "0 < s_m < Critical stretch with Degradation = tanh");
+        if (!(degradation.critical > degradation.onset))
+          throw InputError(file,
+                           section + "Critical stretch",
+                           "s_c = " + number(degradation.critical) +
+                             " is not above the onset stretch s_m = " +
+                             number(degradation.onset),
+                           "s_c > s_m");
+        if (!(degradation.rate > 0.))
+          throw InputError(file,
+                           section + "Degradation rate",
+                           "beta = " + number(degradation.rate) +
+                             " is not positive",
+                           "beta > 0 (the paper: 3)");
+      }
+
+      Layout
+      layout() const override
+      {
+        return pairwise_layout(dirichlet_layer);
+      }
+
+      void
+      initialize(const Region<dim> &r) override
+      {
+        this->region    = r;
+        const double nu = rnp_poissons_ratio(dim, r.plane_strain);
+        if (std::abs(r.poissons_ratio - nu) > 1e-3)
+          throw InputError(
+            r.source_file,
+            "Material/Poisson's ratio",
+            "nu = " + number(r.poissons_ratio) +
+              " cannot be represented by the bond-based model, whose "
+              "Poisson's ratio is " +
+              number(nu) +
+              (dim == 2 ?
+                 (r.plane_strain ? " in plane strain" : " in plane stress") :
+                 " in 3D"),
+            number(nu) + " (or a state-based model: pdlsm, pdlsm energy)");
+        const PD::Families &f = *r.families;
+        double              h = 0.;
+        for (const unsigned int k : f.owners)
+          h = std::max(h, (*r.horizon)[k]);
+        delta = Utilities::MPI::max(h, r.comm);
+        if (!(delta > 0.))
+          delta = 1.; // no PD node anywhere: no bond either
+        c =
+          bond_based_micromodulus(r.youngs_modulus, delta, dim, r.plane_strain);
+        pairwise_bond_volumes(r, uniform_volumes, bond_volume, pd_share);
+
+        // Per bond: v V_m, then mu v V_m.
+        const auto &x = *r.position;
+        volume_weight.assign(f.n_bonds(), 0.);
+        for (std::size_t o = 0; o < f.owners.size(); ++o)
+          for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+            {
+              const double L = (x[f.members[j]] - x[f.owners[o]]).norm();
+              volume_weight[j] =
+                bond_volume[f.members[j]] * partial_volume(L, r.spacing);
+            }
+        weight = volume_weight;
+        if (surface_correction)
+          apply_surface_correction();
+        largest_stretch.assign(f.n_bonds(), 0.);
+      }
+
+      void
+      bonds_changed(const std::vector<std::size_t> &, bool) override
+      {}
+
+      bool
+      linear() const override
+      {
+        return false;
+      }
+
+      bool
+      symmetric() const override
+      {
+        return true;
+      }
+
+      void
+      forces(const std::size_t      begin,
+             const std::size_t      end,
+             const NodalField<dim> &u,
+             double                *f_out) const override
+      {
+        const PD::Families &f = *this->region.families;
+        const auto         &x = *this->region.position;
+        for (std::size_t o = begin; o < end; ++o)
+          {
+            const unsigned int   k  = f.owners[o];
+            const Tensor<1, dim> uk = u[k];
+            Tensor<1, dim>       sum;
+            for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+              if (f.intact[j])
+                {
+                  const unsigned int   m   = f.members[j];
+                  const Tensor<1, dim> xi  = x[m] - x[k];
+                  const Tensor<1, dim> eta = u[m] - uk;
+                  const double         T =
+                    degradation.factor(history_stretch(j, xi, eta));
+                  sum += weight[j] * BondBasedBond<dim>::force(xi, eta, c * T);
+                }
+            for (unsigned int d = 0; d < dim; ++d)
+              f_out[dim * o + d] = -bond_volume[k] * sum[d];
+          }
+      }
+
+      void
+      tangent_row(const std::size_t            o,
+                  const NodalField<dim>       &u,
+                  std::vector<Tensor<2, dim>> &blocks) const override
+      {
+        const PD::Families  &f  = *this->region.families;
+        const auto          &x  = *this->region.position;
+        const unsigned int   k  = f.owners[o];
+        const Tensor<1, dim> uk = u[k];
+        blocks.assign(1, Tensor<2, dim>());
+        for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+          if (f.intact[j])
+            {
+              const unsigned int   m   = f.members[j];
+              const Tensor<1, dim> xi  = x[m] - x[k];
+              const Tensor<1, dim> eta = u[m] - uk;
+              const double         s   = BondBasedBond<dim>::stretch(xi, eta);
+              const double         s_h = history_stretch(j, xi, eta);
+              // T' only while the bond is loading (s is its largest stretch).
+              const double dT = s >= s_h ? degradation.derivative(s) : 0.;
+              const Tensor<2, dim> B =
+                -bond_volume[k] * weight[j] *
+                BondBasedBond<dim>::stiffness(
+                  xi, eta, c, degradation.factor(s_h), dT);
+              blocks.push_back(B);
+              blocks[0] -= B;
+            }
+      }
+
+      Tensor<2, dim>
+      displacement_gradient(const std::size_t      o,
+                            const NodalField<dim> &u) const override
+      {
+        return fitted_gradient(this->region, o, u, [](std::size_t) {
+          return 1.;
+        });
+      }
+
+      /// phi_k = 1 - sum T v V_m / sum v V_m over the family's bonds
+      /// (broken ones T = 0): the broken-bond fraction without degradation
+      /// (specs/003 §1.4).
+      double
+      damage(const std::size_t o, const NodalField<dim> &u) const override
+      {
+        const PD::Families  &f       = *this->region.families;
+        const auto          &x       = *this->region.position;
+        const unsigned int   k       = f.owners[o];
+        const Tensor<1, dim> uk      = u[k];
+        double               carried = 0., total = 0.;
+        for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+          {
+            total += volume_weight[j];
+            if (f.intact[j])
+              {
+                const unsigned int m = f.members[j];
+                carried += volume_weight[j] *
+                           degradation.factor(
+                             history_stretch(j, x[m] - x[k], u[m] - uk));
+              }
+          }
+        return total > 0. ? 1. - carried / total : 0.;
+      }
+
+      double
+      nodal_volume(const unsigned int k) const override
+      {
+        return uniform_volumes ? bond_volume[k] * pd_share[k] :
+                                 (*this->region.pd_volume)[k];
+      }
+
+      std::vector<std::pair<std::string, double>>
+      constants() const override
+      {
+        std::vector<std::pair<std::string, double>> list{
+          {"micromodulus", c},
+          {"horizon", delta},
+          {"spacing", this->region.spacing}};
+        if (degradation.active)
+          {
+            list.emplace_back("onset stretch", degradation.onset);
+            list.emplace_back("critical stretch", degradation.critical);
+            list.emplace_back("degradation rate", degradation.rate);
+          }
+        return list;
+      }
+
+      void
+      commit_state(const NodalField<dim> &u) override
+      {
+        if (!degradation.active || !irreversible)
+          return;
+        const PD::Families &f = *this->region.families;
+        const auto         &x = *this->region.position;
+        for (std::size_t o = 0; o < f.owners.size(); ++o)
+          {
+            const unsigned int k = f.owners[o];
+            for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+              if (f.intact[j])
+                {
+                  const unsigned int m = f.members[j];
+                  largest_stretch[j] =
+                    std::max(largest_stretch[j],
+                             BondBasedBond<dim>::stretch(x[m] - x[k],
+                                                         u[m] - u[k]));
+                }
+          }
+      }
+
+      bool
+      bond_failed(const std::size_t j) const override
+      {
+        return degradation.active && irreversible &&
+               largest_stretch[j] >= degradation.critical;
+      }
+
+      void
+      save_state(StateArchive &state) const override
+      {
+        state.put("pd model/largest stretch", largest_stretch);
+      }
+
+      void
+      restore_state(const StateArchive &state) override
+      {
+        const auto saved = state.get_vector<double>("pd model/largest stretch");
+        if (saved.size() != largest_stretch.size())
+          throw InputError("",
+                           "--restart",
+                           "the checkpoint's bond history has " +
+                             std::to_string(saved.size()) +
+                             " bonds, this run's families " +
+                             std::to_string(largest_stretch.size()));
+        largest_stretch = saved;
+      }
+
+    private:
+      /// The stretch T is evaluated at: the largest of the accepted states
+      /// and the current one (irreversible), or the current one.
+      double
+      history_stretch(const std::size_t     j,
+                      const Tensor<1, dim> &xi,
+                      const Tensor<1, dim> &eta) const
+      {
+        const double s = BondBasedBond<dim>::stretch(xi, eta);
+        return irreversible ? std::max(s, largest_stretch[j]) : s;
+      }
+
+      /// v(|xi|): 1 up to delta - h/2, then linear to 0 at delta + h/2.
+      double
+      partial_volume(const double length, const double h) const
+      {
+        if (!volume_correction || length <= delta - 0.5 * h)
+          return 1.;
+        return std::clamp((delta + 0.5 * h - length) / h, 0., 1.);
+      }
+
+      /**
+       * mu_km = [sum_d (n_d / G_d)^2]^(-1/2), G_d = (g_d,k + g_d,m) / 2,
+       * g_d,k = W_classical / W_k^PD under the uniaxial strain eps e_d:
+       * W_k^PD = 1/4 sum_m c s^2 |xi| v V_m with s = eps n_d^2 (small
+       * strain), W_classical = (lambda + 2 mu) eps^2 / 2. PD nodes only;
+       * g = 1 for the FE nodes that own reverse families.
+       */
+      void
+      apply_surface_correction()
+      {
+        const Region<dim>  &r           = this->region;
+        const PD::Families &f           = *r.families;
+        const auto         &x           = *r.position;
+        const unsigned int  n           = x.size();
+        const double        W_classical = 0.5 * (r.lambda + 2. * r.mu);
+        std::vector<double> g(dim * n, 0.), known(n, 0.);
+        for (std::size_t o = 0; o < f.owners.size(); ++o)
+          {
+            const unsigned int k = f.owners[o];
+            if (!((*r.pd_volume)[k] > 0.))
+              continue;
+            Tensor<1, dim> W;
+            for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+              {
+                const Tensor<1, dim> xi = x[f.members[j]] - x[k];
+                const double         L  = xi.norm();
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    const double s = xi[d] * xi[d] / (L * L);
+                    W[d] += 0.25 * c * s * s * L * volume_weight[j];
+                  }
+              }
+            for (unsigned int d = 0; d < dim; ++d)
+              g[dim * k + d] = W[d] > 0. ? W_classical / W[d] : 1.;
+            known[k] = 1.;
+          }
+        Utilities::MPI::sum(g, r.comm, g);
+        Utilities::MPI::sum(known, r.comm, known);
+        for (unsigned int k = 0; k < n; ++k)
+          if (known[k] == 0.)
+            for (unsigned int d = 0; d < dim; ++d)
+              g[dim * k + d] = 1.;
+        for (std::size_t o = 0; o < f.owners.size(); ++o)
+          {
+            const unsigned int k = f.owners[o];
+            for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+              {
+                const unsigned int   m   = f.members[j];
+                const Tensor<1, dim> xi  = x[m] - x[k];
+                double               sum = 0.;
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    const double G   = 0.5 * (g[dim * k + d] + g[dim * m + d]);
+                    const double n_d = xi[d] / xi.norm();
+                    sum += (n_d / G) * (n_d / G);
+                  }
+                weight[j] = volume_weight[j] / std::sqrt(sum);
+              }
+          }
+      }
+
+      BondDegradation degradation;
+      bool            irreversible       = true;
+      bool            volume_correction  = true;
+      bool            surface_correction = true;
+      bool            uniform_volumes    = false;
+      double          dirichlet_layer    = 1.;
+      double          c = 0., delta = 0.;
+      /// Per node: the volume its bonds carry, and V_k^pd / V_k.
+      std::vector<double> bond_volume, pd_share;
+      /// Per bond (family order): v V_m, mu v V_m, and the largest stretch
+      /// of the accepted states.
+      std::vector<double> volume_weight, weight, largest_stretch;
+    };
+
+#define INSTANTIATE(dim) template struct BondBasedBond<dim>;
+    PDFEM_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace PDModels
+} // namespace pdfem
+
+PDFEM_REGISTER_PD_MODEL(
+  pdfem::PDModels::BondBased,
+  "bond based",
+  "finite-deformation bond-based PD with the smooth tanh degradation "
+  "(Hu et al.); nonlinear, symmetric tangent; nu = 1/3 plane stress, 1/4 "
+  "plane strain and 3D",
+  pdfem::PDModels::declare_bond_based_parameters)
