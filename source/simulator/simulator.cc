@@ -392,8 +392,6 @@ namespace pdfem
     check.grew                = assessment.broken_bonds > 0;
     check.critical_load_ratio = assessment.critical_load_ratio;
     check.separated           = assessment.pieces > 1;
-    if (degraded > 0 && !cracks)
-      separated_by_model(check);
     if (cracks && allow_growth && !check.separated)
       separated_by_load(record.load_factor, check);
     // The PD region follows the cracks: a new system on the same mesh and
@@ -419,6 +417,8 @@ namespace pdfem
       }
     if (check.grew)
       hold_fragments();
+    if (degraded > 0 && !cracks)
+      separated_by_model(record);
     // A resumable driver stops at its next step boundary, after a
     // checkpoint (step_boundary()).
     if (!driver->resumable())

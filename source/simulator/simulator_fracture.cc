@@ -40,16 +40,17 @@ namespace pdfem
 
   template <int dim>
   void
-  Simulator<dim>::Impl::separated_by_model(Drivers::GrowthCheck &check) const
+  Simulator<dim>::Impl::separated_by_model(
+    const Drivers::StepRecord &record) const
   {
     const unsigned int pieces = coupled->count_pieces(
       Fracture::CrackGrowth<dim>::smallest_piece(coupled->size().n_nodes));
     if (pieces > 1)
-      {
-        check.separated  = true;
-        check.separation = "the bonds the PD model failed cut the body into " +
-                           std::to_string(pieces) + " pieces";
-      }
+      throw RunFailure("separated",
+                       "the bonds the PD model failed cut the body into " +
+                         std::to_string(pieces) + " pieces at step " +
+                         std::to_string(record.step) + " (load factor " +
+                         number(record.load_factor) + ")");
   }
 
   template <int dim>
@@ -88,7 +89,7 @@ namespace pdfem
     const Drivers::SystemInterface::Vector &);                     \
   template void Simulator<dim>::Impl::hold_fragments();            \
   template void Simulator<dim>::Impl::separated_by_model(          \
-    Drivers::GrowthCheck &) const;                                 \
+    const Drivers::StepRecord &) const;                            \
   template void Simulator<dim>::Impl::separated_by_load(           \
     double, Drivers::GrowthCheck &);
   PDFEM_INSTANTIATE(INSTANTIATE)

@@ -112,10 +112,10 @@ namespace pdfem
     /// Hold the fragments cut loose (a progress line says how many nodes).
     void
     hold_fragments();
-    /// Set @p check separated when the bonds failed by the model cut the
-    /// body into pieces.
+    /// End the run 'separated' (RunFailure) when the bonds the model
+    /// failed cut the body into pieces (after the step @p record).
     void
-    separated_by_model(Drivers::GrowthCheck &check) const;
+    separated_by_model(const Drivers::StepRecord &record) const;
     bool
     after_time_step(const Drivers::SystemInterface::Vector &u_now,
                     double                                  t) override;
