@@ -90,8 +90,8 @@ namespace pdfem
       const double   reference = std::max(norm, system.force_scale());
       const MPI_Comm comm      = r.get_mpi_communicator();
 
-      // Raw local arrays: the loops below are the whole cost besides the
-      // residuals.
+      // The updates work on the local arrays (one pass each, no element
+      // access through the vector class).
       const unsigned int n      = r.locally_owned_size();
       double            *lambda = density.trilinos_vector()[0];
       for (unsigned int i = 0; i < n; ++i)
