@@ -581,17 +581,16 @@ namespace pdfem
 
     template <int dim>
     void
-    CoupledSystem<dim>::stiffness_row_bounds(const Vector &u,
-                                             const double  t,
-                                             Vector       &bounds)
+    CoupledSystem<dim>::stiffness_row_bounds(Vector &bounds)
     {
       Impl &s = *impl;
       AssertThrow(!s.matrix_free,
                   ExcMessage("row bounds need the assembled tangent"));
-      Vector r;
-      residual(u, t, r, true);
-      s.assemble_tangent();
-      s.tangent_stale = false;
+      if (s.tangent_stale)
+        {
+          s.assemble_tangent();
+          s.tangent_stale = false;
+        }
       bounds.reinit(s.owned, s.comm);
       for (const auto i : s.owned)
         {
@@ -652,9 +651,7 @@ namespace pdfem
                                                          const Vector &); \
   template unsigned int             CoupledSystem<dim>::solve_linear_within(          \
     Vector &, const Vector &, double);                                    \
-  template void CoupledSystem<dim>::stiffness_row_bounds(const Vector &,              \
-                                                         double,                      \
-                                                         Vector &);
+  template void CoupledSystem<dim>::stiffness_row_bounds(Vector &);
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace Coupling

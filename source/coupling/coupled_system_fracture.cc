@@ -159,6 +159,8 @@ namespace pdfem
     CoupledSystem<dim>::accept_state(const Vector &u)
     {
       Impl &s = *impl;
+      if (!s.layout.history)
+        return 0;
       s.import_ghosts(u, s.u_ghosted);
       s.model->commit_state(s.nodal_field(s.u_ghosted));
       return s.break_bonds_where([&s](std::size_t, const std::size_t b) {

@@ -222,7 +222,9 @@ namespace pdfem
       Layout
       layout() const override
       {
-        return pairwise_layout(dirichlet_layer);
+        Layout l  = pairwise_layout(dirichlet_layer);
+        l.history = degradation.active && irreversible;
+        return l;
       }
 
       void

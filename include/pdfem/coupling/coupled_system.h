@@ -292,7 +292,7 @@ namespace pdfem
                           const Vector &r,
                           double        allowed_residual) override;
       void
-      stiffness_row_bounds(const Vector &u, double t, Vector &bounds) override;
+      stiffness_row_bounds(Vector &bounds) override;
 
       /// @name Dynamics (Drivers::DynamicSystemInterface)
       /// @{

@@ -75,16 +75,15 @@ namespace pdfem
       }
 
       /**
-       * The Gershgorin bound of every owned row of the tangent K(u) at load
-       * factor @p t: @p bounds_i = sum_j |K_ij| (held rows: their
-       * diagonal). Dynamic relaxation's fictitious density
-       * (DynamicRelaxation). By default not provided (std::logic_error).
+       * The Gershgorin bound of every owned row of the tangent K of the
+       * last residual() that asked for it (as solve_linear() uses it):
+       * @p bounds_i = sum_j |K_ij| (held rows: their diagonal). Dynamic
+       * relaxation's fictitious density (DynamicRelaxation). By default
+       * not provided (std::logic_error).
        */
       virtual void
-      stiffness_row_bounds(const Vector &u, double t, Vector &bounds)
+      stiffness_row_bounds(Vector &bounds)
       {
-        (void)u;
-        (void)t;
         (void)bounds;
         throw std::logic_error("this system gives no bounds of its tangent");
       }

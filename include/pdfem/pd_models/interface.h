@@ -111,6 +111,10 @@ namespace pdfem
       /// crack faces' boundary term. A model that treats crack faces its
       /// own way says false, and the option is refused with it.
       bool free_crack_faces = true;
+      /// The model keeps a history of the accepted states (commit_state(),
+      /// bond_failed()); without one the system neither passes the states
+      /// on nor looks for failed bonds.
+      bool history = false;
     };
 
     /**
@@ -294,7 +298,8 @@ namespace pdfem
        * @name Models with a history (a bond's largest stretch so far)
        *
        * The forces of such a model depend on u and on the states accepted
-       * before it. The system calls commit_state() with every accepted
+       * before it; its Layout says `history`. The system calls
+       * commit_state() with every accepted
        * state (an equilibrium of a static driver, a step of a time
        * integrator), serially on each rank, and then breaks the bonds for
        * which bond_failed() is true (they carry no force at any later
