@@ -17,12 +17,15 @@
 #   # REFERENCE: <scene relative to the scene>    run it once, for CHECK-REFERENCE
 #   # CHECK-REFERENCE: <key> = <reference key> rel|abs <tol>
 #                                                 a value against the reference run's value
+#   # CHECK-REFERENCE-FIELDS: l2|max <columns> <tol>
+#                                                 nodes.csv against the reference run's
+#                                                 (pdfem_check fields)
 cmake_minimum_required(VERSION 3.16)
 set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
 set(ENV{OMPI_ALLOW_RUN_AS_ROOT_CONFIRM} 1)
 set(ENV{OMPI_MCA_rmaps_base_oversubscribe} 1)
 
-file(STRINGS "${PRM}" directives REGEX "^# (CHECK|CHECK-HISTORY|CHECK-REFERENCE|REFERENCE|EXIT-STATE|EXPECT-ERROR|MPI|THREADS|REQUIRES):")
+file(STRINGS "${PRM}" directives REGEX "^# (CHECK|CHECK-HISTORY|CHECK-REFERENCE|CHECK-REFERENCE-FIELDS|REFERENCE|EXIT-STATE|EXPECT-ERROR|MPI|THREADS|REQUIRES):")
 get_filename_component(scene_dir "${PRM}" DIRECTORY)
 set(checks "")
 set(history_checks "")
@@ -32,6 +35,7 @@ set(n_ranks 0)
 set(one_thread OFF)
 set(reference "")
 set(reference_checks "")
+set(reference_field_checks "")
 foreach(line IN LISTS directives)
   if(line MATCHES "^# CHECK-HISTORY: *([^ ]+) +(.+)$")
     set(command "${CMAKE_MATCH_1}")
@@ -42,6 +46,8 @@ foreach(line IN LISTS directives)
     list(APPEND checks "${CMAKE_MATCH_1}|${CMAKE_MATCH_2}|${CMAKE_MATCH_3}|${CMAKE_MATCH_4}")
   elseif(line MATCHES "^# CHECK: *([^ ]+) *([<>]) *([^ ]+) *$")
     list(APPEND checks "${CMAKE_MATCH_1}|${CMAKE_MATCH_3}|${CMAKE_MATCH_2}|")
+  elseif(line MATCHES "^# CHECK-REFERENCE-FIELDS: *(l2|max) +([^ ]+) +([^ ]+)")
+    list(APPEND reference_field_checks "${CMAKE_MATCH_1}|${CMAKE_MATCH_2}|${CMAKE_MATCH_3}")
   elseif(line MATCHES "^# CHECK-REFERENCE: *([^ ]+) *= *([^ ]+) +(rel|abs) +([^ ]+)")
     list(APPEND reference_checks "${CMAKE_MATCH_1}|${CMAKE_MATCH_2}|${CMAKE_MATCH_3}|${CMAKE_MATCH_4}")
   elseif(line MATCHES "^# REFERENCE: *(.+)$")
@@ -137,7 +143,7 @@ endfunction()
 # A reference scene, run once: CHECK-REFERENCE compares a value of this run with one of it.
 if(reference)
   execute_process(COMMAND "${PDFEM}" "${scene_dir}/${reference}" --output "${WORK}/reference" --quiet
-    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    --set "Output/Write nodes csv=true" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   message("${out}${err}")
   foreach(check IN LISTS reference_checks)
     string(REPLACE "|" ";" parts "${check}")
@@ -167,6 +173,14 @@ function(expect_same_as_np1 tag what)
 endfunction()
 
 run_and_check(np1 "")
+foreach(check IN LISTS reference_field_checks)
+  string(REPLACE "|" ";" parts "${check}")
+  execute_process(COMMAND "${CHECKER}" fields "${WORK}/np1/nodes.csv" "${WORK}/reference/nodes.csv"
+    ${parts} RESULT_VARIABLE crc)
+  if(crc)
+    message(FATAL_ERROR "the nodal fields differ from the reference ${reference}'s")
+  endif()
+endforeach()
 if(n_ranks GREATER 1)
   run_and_check(np${n_ranks} "${MPIEXEC};-np;${n_ranks}")
   expect_same_as_np1(np${n_ranks} "${n_ranks}-rank" nodes.csv)

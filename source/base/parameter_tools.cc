@@ -4,6 +4,7 @@
 
 #include <deal.II/base/function_parser.h>
 
+#include <cmath>
 #include <iostream>
 #include <map>
 #include <regex>
@@ -63,6 +64,21 @@ namespace pdfem
                            "cannot parse the expression '" + expression + "'",
                            "a muparser expression of x, y, z and t");
         }
+    }
+
+    bool
+    parse_number(const std::string &text, double &value)
+    {
+      std::size_t end = 0;
+      try
+        {
+          value = std::stod(text, &end);
+        }
+      catch (...)
+        {
+          return false;
+        }
+      return !text.empty() && end == text.size() && std::isfinite(value);
     }
 
     std::array<double, 3>

@@ -169,6 +169,25 @@ namespace pdfem
     }
 
     template <int dim>
+    PDModels::DegradationState
+    CoupledSystem<dim>::degradation_state(const Vector &u,
+                                          const double  onset_fraction)
+    {
+      Impl &s = *impl;
+      s.import_ghosts(u, s.u_ghosted);
+      PDModels::DegradationState state =
+        s.model->degradation_state(s.nodal_field(s.u_ghosted), onset_fraction);
+      const MPI_Comm comm = s.comm;
+      state.available     = Utilities::MPI::max(int(state.available), comm) > 0;
+      state.n_beyond_threshold =
+        Utilities::MPI::sum(state.n_beyond_threshold, comm);
+      state.n_failed        = Utilities::MPI::sum(state.n_failed, comm);
+      state.degradation     = Utilities::MPI::sum(state.degradation, comm);
+      state.max_onset_ratio = Utilities::MPI::max(state.max_onset_ratio, comm);
+      return state;
+    }
+
+    template <int dim>
     const std::vector<double> &
     CoupledSystem<dim>::horizons() const
     {
@@ -380,6 +399,8 @@ namespace pdfem
   template unsigned long CoupledSystem<dim>::Impl::break_bonds_where(            \
     const std::function<bool(std::size_t, std::size_t)> &);                      \
   template unsigned long CoupledSystem<dim>::accept_state(const Vector &);       \
+  template PDModels::DegradationState CoupledSystem<dim>::degradation_state(     \
+    const Vector &, double);                                                     \
   template const std::vector<double>      &CoupledSystem<dim>::horizons() const; \
   template const PD::Families             &CoupledSystem<dim>::families() const; \
   template const PDModels::Interface<dim> &CoupledSystem<dim>::pd_model()        \

@@ -32,17 +32,8 @@ namespace pdfem
       {
         if (text == "adaptive")
           return -1.;
-        std::size_t end = 0;
-        double      c   = -1.;
-        try
-          {
-            c = std::stod(text, &end);
-          }
-        catch (...)
-          {
-            end = 0;
-          }
-        if (end != text.size() || !(c >= 0. && c < 2.))
+        double c = -1.;
+        if (!ParameterTools::parse_number(text, c) || !(c >= 0. && c < 2.))
           throw InputError(file,
                            "Driver/Dynamic relaxation/Damping",
                            "'" + text +
@@ -52,6 +43,31 @@ namespace pdfem
         return c;
       }
     } // namespace
+
+    void
+    check_relaxation_settings(const Settings &settings, const std::string &file)
+    {
+      parse_damping(settings.relaxation_damping, file);
+      if (!(settings.relaxation_density_factor > 0.))
+        throw InputError(file,
+                         "Driver/Dynamic relaxation/Density factor",
+                         number(settings.relaxation_density_factor) +
+                           " is not positive",
+                         "factor > 0 (>= 1 is stable for a linear model)");
+    }
+
+    void
+    check_relaxation_traits(const RunTraits &traits)
+    {
+      if (!traits.assembled_matrix)
+        throw InputError(traits.file,
+                         "Linear solver/Type",
+                         "dynamic relaxation takes its fictitious density "
+                         "from the assembled tangent, which the "
+                         "matrix-free solver does not build",
+                         "direct, cg or gmres with an assembled "
+                         "preconditioner");
+    }
 
     DynamicRelaxation::DynamicRelaxation(const Settings &settings)
       : settings(settings)
@@ -209,27 +225,14 @@ namespace pdfem
                    const int          dim) override
         {
           Interface::initialize(settings, file, dim);
-          parse_damping(settings.relaxation_damping, file);
-          if (!(settings.relaxation_density_factor > 0.))
-            throw InputError(file,
-                             "Driver/Dynamic relaxation/Density factor",
-                             number(settings.relaxation_density_factor) +
-                               " is not positive",
-                             "factor > 0 (>= 1 is stable for a linear model)");
+          check_relaxation_settings(settings, file);
         }
 
         void
         check(const RunTraits &traits) const override
         {
           Interface::check(traits);
-          if (!traits.assembled_matrix)
-            throw InputError(traits.file,
-                             "Linear solver/Type",
-                             "dynamic relaxation takes its fictitious density "
-                             "from the assembled tangent, which the "
-                             "matrix-free solver does not build",
-                             "direct, cg or gmres with an assembled "
-                             "preconditioner");
+          check_relaxation_traits(traits);
         }
 
         void

@@ -144,17 +144,30 @@ namespace pdfem
                       StabilityInterface                            *stability,
                       const LoadDerivative &load_derivative)
     {
+      run(system, u, on_step, stability, load_derivative, Span());
+    }
+
+    double
+    NewtonDriver::run(SystemInterface                               &system,
+                      SystemInterface::Vector                       &u,
+                      const std::function<void(const StepRecord &)> &on_step,
+                      StabilityInterface                            *stability,
+                      const LoadDerivative &load_derivative,
+                      const Span           &span)
+    {
       result                            = NewtonOutcome();
       const auto              free_part = free_part_of(system);
       SystemInterface::Vector last = u, previous = u;
-      double                  t = 0., t_previous = 0.;
-      const double            base  = 1. / std::max(1u, settings.load_steps);
+      double                  t = span.begin, t_previous = span.begin;
+      const double            base  = span.increment > 0. ?
+                                        span.increment :
+                                        1. / std::max(1u, settings.load_steps);
       double                  dt    = base;
       unsigned int            level = 0, successes = 0, step = 0;
-      const double            t_end = 1. - 1e-12;
+      const double            t_end = span.end - 1e-12;
       while (t < t_end)
         {
-          const double t_new = std::min(1., t + dt);
+          const double t_new = std::min(span.end, t + dt);
           // Predictor: the secant through the last two converged states
           // (the free DoFs follow the load instead of waiting for Newton).
           u = last;
@@ -178,7 +191,7 @@ namespace pdfem
             }
           system.apply_dirichlet(u, t_new);
           StepRecord record;
-          record.step        = step + 1;
+          record.step        = span.first_step + step;
           record.time        = t_new;
           record.load_factor = t_new;
           bool        ok     = solve_step(system, u, t_new, record);
@@ -202,6 +215,11 @@ namespace pdfem
                   why = s.str();
                 }
             }
+          if (ok && span.stop_before && span.stop_before(record))
+            {
+              u = last;
+              return t;
+            }
           if (ok)
             {
               ++step;
@@ -211,6 +229,8 @@ namespace pdfem
               last                    = u;
               result.last_stable_load = t;
               on_step(record);
+              if (span.stop_after && span.stop_after(record))
+                return t;
               // after two successes in a row, undo one cut
               if (level > 0 && ++successes == 2)
                 {
@@ -234,8 +254,9 @@ namespace pdfem
           // t through unstable states) until it reaches a stable state
           // beyond the failed load factor, the state the body jumps to;
           // load control resumes there.
-          if (load_derivative && stability != nullptr &&
-              settings.stability_check && step > 0 && t > t_previous)
+          if (span.follow_snap_backs && load_derivative &&
+              stability != nullptr && settings.stability_check && step > 0 &&
+              t > t_previous)
             {
               SystemInterface::Vector first_increment = last;
               first_increment -= previous;
@@ -312,9 +333,11 @@ namespace pdfem
                   t                       = lambda;
                   last                    = u;
                   result.last_stable_load = t;
-                  record.step             = step;
+                  record.step             = span.first_step + step - 1;
                   record.time = record.load_factor = t;
                   on_step(record);
+                  if (span.stop_after && span.stop_after(record))
+                    return t;
                   level     = 0;
                   dt        = base;
                   successes = 0;
@@ -330,7 +353,9 @@ namespace pdfem
             << " step cut(s)); last stable load factor " << t;
           throw RunFailure("unstable", s.str());
         }
+      return t;
     }
+
     bool
     NewtonDriver::arc_step(
       SystemInterface                                      &system,

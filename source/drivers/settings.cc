@@ -210,6 +210,62 @@ namespace pdfem
                         "Relaxation iterations per load step before the run "
                         "stops with exit state 'diverged'.");
       prm.leave_subsection();
+      prm.enter_subsection("Adaptive");
+      prm.declare_entry("Implicit steps",
+                        "5",
+                        Integer(1),
+                        "N_i: Newton's load increment is 1/N_i (cut where "
+                        "a step fails; specs/003 §4).");
+      prm.declare_entry("Explicit steps",
+                        "100",
+                        Integer(1),
+                        "N_e: the load left at the first switch to "
+                        "dynamic relaxation, 1 - t_n, is applied in N_e "
+                        "increments, each relaxed to equilibrium (with "
+                        "Dynamic relaxation/Ramp iterations).");
+      prm.declare_entry("Switch to explicit",
+                        "onset",
+                        Selection("onset|newton failure"),
+                        "onset: after the first Newton state in which more "
+                        "bonds than before stretch beyond Onset fraction * "
+                        "s_m (the paper's rule), or where Newton fails; "
+                        "newton failure: only where Newton fails with its "
+                        "smallest step.");
+      prm.declare_entry("Onset state",
+                        "discard",
+                        Selection("discard|keep"),
+                        "The Newton state in which the switch to explicit "
+                        "is detected: discard (relax from the state before "
+                        "it: Newton's long step may have jumped deep into "
+                        "the degradation) or keep (relax from it, the "
+                        "paper's choice, specs/003 §4 [AMB] (a)).");
+      prm.declare_entry("Onset fraction",
+                        "1",
+                        Double(),
+                        "The switch threshold stretch as a fraction of the "
+                        "onset stretch s_m (0 < f <= 1; below 1 switches "
+                        "before any bond degrades).");
+      prm.declare_entry("Switch to implicit",
+                        "quiet",
+                        Selection("quiet|never"),
+                        "quiet: back to Newton after Quiet steps explicit "
+                        "increments in a row in which no bond passed the "
+                        "threshold and the degradation sum(1 - T) changed "
+                        "by at most Damage tolerance (relative); never: "
+                        "explicit to the end (the paper leaves the rule "
+                        "open, specs/003 §4).");
+      prm.declare_entry("Quiet steps",
+                        "",
+                        Anything(),
+                        "The quiet window of 'Switch to implicit = quiet' "
+                        "(an integer >= 1; no default: the rule needs it).");
+      prm.declare_entry("Damage tolerance",
+                        "",
+                        Anything(),
+                        "The largest relative change of sum(1 - T) in a "
+                        "quiet increment (a number > 0; no default: the "
+                        "rule needs it).");
+      prm.leave_subsection();
       prm.leave_subsection();
     }
 
@@ -248,6 +304,16 @@ namespace pdfem
       relaxation_damping         = trim(prm.get("Damping"));
       relaxation_max_iterations  = prm.get_integer("Max iterations");
       relaxation_ramp_iterations = prm.get_integer("Ramp iterations");
+      prm.leave_subsection();
+      prm.enter_subsection("Adaptive");
+      adaptive_implicit_steps        = prm.get_integer("Implicit steps");
+      adaptive_explicit_steps        = prm.get_integer("Explicit steps");
+      adaptive_to_explicit           = prm.get("Switch to explicit");
+      adaptive_onset_fraction        = prm.get_double("Onset fraction");
+      adaptive_onset_state           = prm.get("Onset state");
+      adaptive_to_implicit           = prm.get("Switch to implicit");
+      adaptive_quiet_steps_text      = trim(prm.get("Quiet steps"));
+      adaptive_damage_tolerance_text = trim(prm.get("Damage tolerance"));
       prm.leave_subsection();
       prm.leave_subsection();
       if (!(step_cut_factor > 0. && step_cut_factor < 1.))

@@ -222,8 +222,9 @@ namespace pdfem
       Layout
       layout() const override
       {
-        Layout l  = pairwise_layout(dirichlet_layer);
-        l.history = degradation.active && irreversible;
+        Layout l             = pairwise_layout(dirichlet_layer);
+        l.history            = degradation.active && irreversible;
+        l.smooth_degradation = degradation.active;
         return l;
       }
 
@@ -406,21 +407,16 @@ namespace pdfem
       {
         if (!degradation.active || !irreversible)
           return;
-        const PD::Families &f = *this->region.families;
-        const auto         &x = *this->region.position;
-        for (std::size_t o = 0; o < f.owners.size(); ++o)
-          {
-            const unsigned int k = f.owners[o];
-            for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
-              if (f.intact[j])
-                {
-                  const unsigned int m = f.members[j];
-                  largest_stretch[j] =
-                    std::max(largest_stretch[j],
-                             BondBasedBond<dim>::stretch(x[m] - x[k],
-                                                         u[m] - u[k]));
-                }
-          }
+        const auto &x = *this->region.position;
+        for_each_bond([&](const std::size_t  j,
+                          const unsigned int k,
+                          const unsigned int m,
+                          const bool         intact) {
+          if (intact)
+            largest_stretch[j] =
+              std::max(largest_stretch[j],
+                       BondBasedBond<dim>::stretch(x[m] - x[k], u[m] - u[k]));
+        });
       }
 
       bool
@@ -428,6 +424,38 @@ namespace pdfem
       {
         return degradation.active && irreversible &&
                largest_stretch[j] >= degradation.critical;
+      }
+
+      DegradationState
+      degradation_state(const NodalField<dim> &u,
+                        const double           onset_fraction) const override
+      {
+        DegradationState state;
+        if (!degradation.active)
+          return state;
+        state.available  = true;
+        const double s_t = onset_fraction * degradation.onset;
+        const auto  &x   = *this->region.position;
+        for_each_bond([&](const std::size_t  j,
+                          const unsigned int k,
+                          const unsigned int m,
+                          const bool         intact) {
+          if (intact)
+            {
+              const double s = history_stretch(j, x[m] - x[k], u[m] - u[k]);
+              state.n_beyond_threshold += s > s_t;
+              state.degradation += 1. - degradation.factor(s);
+              state.max_onset_ratio =
+                std::max(state.max_onset_ratio, s / degradation.onset);
+            }
+          else if (bond_failed(j))
+            {
+              ++state.n_beyond_threshold;
+              ++state.n_failed;
+              state.degradation += 1.;
+            }
+        });
+        return state;
       }
 
       void
@@ -451,6 +479,18 @@ namespace pdfem
       }
 
     private:
+      /// @p visit(j, k, m, intact) for every bond j (owner k, member m) of
+      /// this rank's families.
+      template <typename Visit>
+      void
+      for_each_bond(const Visit &visit) const
+      {
+        const PD::Families &f = *this->region.families;
+        for (std::size_t o = 0; o < f.owners.size(); ++o)
+          for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+            visit(j, f.owners[o], f.members[j], bool(f.intact[j]));
+      }
+
       /// The stretch T is evaluated at: the largest of the accepted states
       /// and the current one (irreversible), or the current one.
       double

@@ -62,16 +62,18 @@ namespace pdfem
                   const bool               nonlinear,
                   const double             density,
                   const Solvers::Settings &linear_solver,
-                  const std::string       &driver_name)
+                  const std::string       &driver_name,
+                  const bool               smooth_degradation)
   {
     Drivers::RunTraits traits;
-    traits.file             = file;
-    traits.dim              = dim;
-    traits.model_name       = model_name;
-    traits.nonlinear_model  = nonlinear;
-    traits.has_mass         = density > 0.;
-    traits.assembled_matrix = !linear_solver.matrix_free();
-    traits.driver_name      = driver_name;
+    traits.smooth_degradation = smooth_degradation;
+    traits.file               = file;
+    traits.dim                = dim;
+    traits.model_name         = model_name;
+    traits.nonlinear_model    = nonlinear;
+    traits.has_mass           = density > 0.;
+    traits.assembled_matrix   = !linear_solver.matrix_free();
+    traits.driver_name        = driver_name;
     return traits;
   }
 
@@ -156,7 +158,9 @@ namespace pdfem
                                        nonlinear_model,
                                        density,
                                        linear_solver,
-                                       driver_settings.type),
+                                       driver_settings.type,
+                                       plugins.model && plugins.model->layout()
+                                                          .smooth_degradation),
                        fracture);
     return plugins;
   }
@@ -257,6 +261,8 @@ namespace pdfem
       }
 
     std::vector<std::string> columns = Summary::first_history_columns();
+    for (const auto &c : driver->history_columns())
+      columns.push_back(c);
     if (criterion)
       for (const auto &c : criterion->history_columns(*cracks))
         columns.push_back(c);
@@ -292,6 +298,7 @@ namespace pdfem
   Simulator<dim>::Impl::add_history_row(const std::vector<double> &base)
   {
     std::vector<double> row = base;
+    driver->history_values(row);
     if (criterion)
       criterion->history_values(*cracks, assessment, row);
     for (const auto &p : postprocessors)
@@ -356,9 +363,10 @@ namespace pdfem
     step_record                  = record;
     n_steps                      = record.step;
     load_factor                  = record.load_factor;
-    const bool fields_due        = setup.write_every > 0 &&
-                            record.step % setup.write_every == 0 &&
-                            record.step < setup.driver.load_steps;
+    const unsigned int planned   = driver->planned_steps();
+    const bool         fields_due =
+      setup.write_every > 0 && record.step % setup.write_every == 0 &&
+      (planned > 0 ? record.step < planned : record.load_factor < 1. - 1e-12);
     // Nodal results: now if the criterion or the fields need them, else
     // on a postprocessor's demand (get_nodal_results()).
     results.reset();

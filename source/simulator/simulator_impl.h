@@ -89,6 +89,17 @@ namespace pdfem
     {
       return coupled->load_derivative(!arc_length);
     }
+    PDModels::DegradationState
+    degradation_state(const double onset_fraction) override
+    {
+      return coupled->degradation_state(u, onset_fraction);
+    }
+    void
+    report(const std::string &line) override
+    {
+      if (progress)
+        *progress << line << std::endl;
+    }
     void
     after_stability_check(const Drivers::StabilityReport &report) override
     {

@@ -58,10 +58,12 @@ namespace pdfem
       return;
     const internal::KeepFormat keep(*progress);
     // step, load, iterations, broken bonds, time left
-    const unsigned int n     = setup.driver.load_steps;
+    const unsigned int n     = driver->planned_steps();
     const double       spent = seconds_since(setup.setup_start);
-    *progress << "Step " << std::setw(4) << record.step << "/" << n
-              << "  t = " << std::setw(10) << std::setprecision(4)
+    *progress << "Step " << std::setw(4) << record.step;
+    if (n > 0)
+      *progress << "/" << n;
+    *progress << "  t = " << std::setw(10) << std::setprecision(4)
               << record.load_factor << "  iterations "
               << record.newton_iterations << " (linear "
               << record.linear_iterations << ")  |r|/|f| = " << std::scientific
@@ -69,9 +71,12 @@ namespace pdfem
               << std::defaultfloat << "  broken bonds " << n_broken_bonds;
     if (criterion)
       *progress << criterion->progress(*cracks, assessment);
-    *progress << "  left ~" << std::fixed << std::setprecision(1)
-              << (record.step < n ? spent / record.step * (n - record.step) :
-                                    0.)
+    // Unknown step total: by load (the load factor grows from 0 to 1).
+    const double t = record.load_factor;
+    const double left =
+      n > 0 ? (record.step < n ? spent / record.step * (n - record.step) : 0.) :
+              (t > 0. && t < 1. ? spent / t * (1. - t) : 0.);
+    *progress << "  left ~" << std::fixed << std::setprecision(1) << left
               << " s" << std::defaultfloat << std::endl;
   }
 

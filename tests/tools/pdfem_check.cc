@@ -21,6 +21,11 @@
 //       relative to the largest magnitude among the numbers of their object
 //       (as csv does per quantity); the run-dependent members (timings,
 //       peak_memory_mb_rank0, input_file, message) are skipped.
+//   pdfem_check fields a.csv b.csv l2|max COLUMNS TOL
+//       two field files of one mesh (nodes.csv of two runs), rows in the
+//       same order: l2 passes if sqrt(sum (a - b)^2) <= TOL sqrt(sum b^2)
+//       over the comma-separated COLUMNS (the relative L2 difference of a
+//       vector field), max if max |a - b| <= TOL over them.
 //   pdfem_check column history.csv COLUMN max|min|maxabs|last >|< BOUND
 //       a statistic of one column of a history (rows after the header).
 //   pdfem_check wave-speed history.csv COL_A X_A COL_B X_B LEVEL EXPECTED TOL
@@ -447,6 +452,43 @@ main(int argc, char **argv)
       std::cout << (ok ? "ok   " : "FAIL ") << n << " values of " << a[1]
                 << " and " << a[2] << " compared (tol " << a[3] << ")\n";
       return ok && n > 0 ? 0 : 1;
+    }
+  if (a.size() == 6 && a[0] == "fields" && (a[3] == "l2" || a[3] == "max"))
+    {
+      const auto x = read_csv(a[1]), y = read_csv(a[2]);
+      if (x.size() != y.size() || x.size() < 2)
+        {
+          std::cout << "FAIL " << a[1] << " and " << a[2]
+                    << " have different or no rows\n";
+          return 1;
+        }
+      double            difference = 0., size = 0.;
+      std::stringstream names(a[4]);
+      std::string       name;
+      while (std::getline(names, name, ','))
+        {
+          const std::size_t cx = column_index(x, a[1], name),
+                            cy = column_index(y, a[2], name);
+          for (std::size_t r = 1; r < x.size(); ++r)
+            {
+              const double u = std::stod(x[r].at(cx)),
+                           v = std::stod(y[r].at(cy));
+              if (a[3] == "l2")
+                {
+                  difference += (u - v) * (u - v);
+                  size += v * v;
+                }
+              else
+                difference = std::max(difference, std::abs(u - v));
+            }
+        }
+      const double measure = a[3] == "l2" ?
+                               std::sqrt(difference / std::max(size, 1e-300)) :
+                               difference;
+      const bool   ok      = measure <= std::stod(a[5]);
+      std::cout << (ok ? "ok   " : "FAIL ") << a[3] << " difference of " << a[4]
+                << ": " << measure << " (tol " << a[5] << ")\n";
+      return ok ? 0 : 1;
     }
   if (a.size() == 6 && a[0] == "column")
     {

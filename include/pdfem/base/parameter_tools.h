@@ -36,6 +36,10 @@ namespace pdfem
                 const std::string &parameter,
                 int                dim);
 
+    /// Is all of @p text one finite number? Then it is in @p value.
+    bool
+    parse_number(const std::string &text, double &value);
+
     /// A deal.II parameter-parsing exception's text as one clear line.
     std::string
     clean_dealii_message(const std::string &what);

@@ -6,6 +6,7 @@
 #include <pdfem/drivers/newton_driver.h>
 #include <pdfem/fe/elastic_material.h>
 #include <pdfem/mesh/cracks.h>
+#include <pdfem/pd_models/degradation_state.h>
 #include <pdfem/solvers/settings.h>
 
 #include <deal.II/base/point.h>
@@ -427,6 +428,12 @@ namespace pdfem
        */
       unsigned long
       accept_state(const Vector &u);
+
+      /// How far the PD model's smooth degradation has gone at @p u, over
+      /// all ranks (PDModels::DegradationState; the switch threshold is
+      /// @p onset_fraction times the onset stretch). Collective.
+      PDModels::DegradationState
+      degradation_state(const Vector &u, double onset_fraction);
 
       /// This rank's families and their bond states, read-only (bonds break
       /// only through break_bonds() and break_bonds_if()); a bond between

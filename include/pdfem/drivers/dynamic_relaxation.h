@@ -8,11 +8,25 @@
 #include <pdfem/drivers/system_interface.h>
 
 #include <functional>
+#include <string>
 
 namespace pdfem
 {
   namespace Drivers
   {
+    struct RunTraits;
+
+    /// InputError (naming @p file) for a `Dynamic relaxation` damping or
+    /// density factor that cannot work.
+    void
+    check_relaxation_settings(const Settings    &settings,
+                              const std::string &file);
+
+    /// InputError where the run builds no assembled tangent (the density's
+    /// bound needs it).
+    void
+    check_relaxation_traits(const RunTraits &traits);
+
     /**
      * Adaptive dynamic relaxation (Kilic & Madenci 2010; specs/003 §2):
      * static equilibrium r(u) = f_ext - f_int(u) = 0 as the steady state of

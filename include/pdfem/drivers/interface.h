@@ -9,6 +9,7 @@
 #include <pdfem/drivers/resume.h>
 #include <pdfem/drivers/settings.h>
 #include <pdfem/drivers/static_driver.h>
+#include <pdfem/pd_models/degradation_state.h>
 
 #include <map>
 #include <memory>
@@ -108,6 +109,24 @@ namespace pdfem
         (void)save;
       }
 
+      /// How far the PD model's smooth degradation has gone at solution()
+      /// (threshold: @p onset_fraction times the onset stretch; not
+      /// available unless the model degrades smoothly). Collective.
+      virtual PDModels::DegradationState
+      degradation_state(double onset_fraction)
+      {
+        (void)onset_fraction;
+        return {};
+      }
+
+      /// A line of progress output from the driver (e.g. a switch of
+      /// method), printed unless the run is quiet.
+      virtual void
+      report(const std::string &line)
+      {
+        (void)line;
+      }
+
       /// The driver's state in the checkpoint this run restarts from
       /// (nullptr: a fresh start).
       virtual const StateArchive *
@@ -142,6 +161,9 @@ namespace pdfem
       bool has_mass = false;
       /// The linear solver assembles the coupled matrix (not 'amg fe').
       bool assembled_matrix = true;
+      /// The PD model degrades smoothly (Host::degradation_state() is
+      /// available).
+      bool smooth_degradation = false;
       /// The model's name and the driver's own, for messages.
       std::string model_name;
       std::string driver_name;
@@ -217,6 +239,28 @@ namespace pdfem
       grows_cracks() const
       {
         return false;
+      }
+
+      /// The number of steps the run will record if it completes (0: not
+      /// known in advance; progress then estimates the time left by load).
+      virtual unsigned int
+      planned_steps() const
+      {
+        return parameters.load_steps;
+      }
+
+      /// The driver's own history.csv columns (after the first ones).
+      virtual std::vector<std::string>
+      history_columns() const
+      {
+        return {};
+      }
+
+      /// Their values for the row being recorded (appended to @p row).
+      virtual void
+      history_values(std::vector<double> &row) const
+      {
+        (void)row;
       }
 
       /// Run: @p host gives the system and receives every step.

@@ -102,6 +102,28 @@ namespace pdfem
 
       explicit NewtonDriver(const Settings &settings);
 
+      /** A part of the load path for run(): where it starts and ends. */
+      struct Span
+      {
+        /// The load factor of the equilibrium @p u the run starts from.
+        double begin = 0.;
+        /// The load factor it ends at.
+        double end = 1.;
+        /// The load increment before cuts (0: 1 / `Load steps`).
+        double increment = 0.;
+        /// The number of the first step's StepRecord.
+        unsigned int first_step = 1;
+        /// Follow the path past a failed smallest increment (see run());
+        /// false: that failure ends the span (RunFailure "unstable").
+        bool follow_snap_backs = true;
+        /// After each on_step(): true ends the span at that state.
+        std::function<bool(const StepRecord &)> stop_after;
+        /// Before each on_step(), with @p u the converged state: true
+        /// ends the span at the state before (which @p u then holds again),
+        /// this one neither recorded nor accepted.
+        std::function<bool(const StepRecord &)> stop_before;
+      };
+
       /**
        * @p u: initial guess in, last stable state out. @p stability may be
        * null (no stability check). With @p load_derivative (loads linear
@@ -120,6 +142,20 @@ namespace pdfem
           const std::function<void(const StepRecord &)> &on_step,
           StabilityInterface                            *stability,
           const LoadDerivative                          &load_derivative = {});
+
+      /**
+       * As above over @p span only (the load factor from span.begin, the
+       * state of @p u, to span.end, or to the first state for which
+       * span.stop_after is true). Returns the load factor of the last
+       * state, which @p u holds.
+       */
+      double
+      run(SystemInterface                               &system,
+          SystemInterface::Vector                       &u,
+          const std::function<void(const StepRecord &)> &on_step,
+          StabilityInterface                            *stability,
+          const LoadDerivative                          &load_derivative,
+          const Span                                    &span);
 
       const DriverTimings &
       timings() const

@@ -98,6 +98,29 @@ namespace pdfem
       /// once).
       unsigned int relaxation_ramp_iterations = 0;
       /// @}
+
+      /// @name The adaptive explicit-implicit driver (Driver/Adaptive)
+      /// @{
+      /// N_i: the implicit load increment is 1 / N_i.
+      unsigned int adaptive_implicit_steps = 5;
+      /// N_e: the explicit increment is (1 - t_n) / N_e, t_n the load of
+      /// the first switch to explicit.
+      unsigned int adaptive_explicit_steps = 100;
+      /// "onset" (a bond passes the threshold, or Newton fails) or
+      /// "newton failure" (only the latter).
+      std::string adaptive_to_explicit = "onset";
+      /// "discard" (relax from the state before the onset step) or "keep"
+      /// (from the onset step's Newton state, the paper's).
+      std::string adaptive_onset_state = "discard";
+      /// The threshold stretch as a fraction of s_m.
+      double adaptive_onset_fraction = 1.;
+      /// "quiet" (the damage stops growing) or "never".
+      std::string adaptive_to_implicit = "quiet";
+      /// The quiet window and the damage tolerance as given ("": unset;
+      /// the quiet rule needs both, checked by the driver).
+      std::string adaptive_quiet_steps_text;
+      std::string adaptive_damage_tolerance_text;
+      /// @}
       /// The texts of 'Time step' and 'Monitor points' as given (parsed
       /// by check_time_stepping()).
       std::string time_step_text;

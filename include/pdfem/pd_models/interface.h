@@ -4,6 +4,7 @@
 
 #include <pdfem/base/config.h>
 #include <pdfem/base/plugins.h>
+#include <pdfem/pd_models/degradation_state.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -115,6 +116,10 @@ namespace pdfem
       /// bond_failed()); without one the system neither passes the states
       /// on nor looks for failed bonds.
       bool history = false;
+      /// The model degrades its bonds smoothly past an onset stretch
+      /// (degradation_state() says how far), so that a driver may switch
+      /// methods on it.
+      bool smooth_degradation = false;
     };
 
     /**
@@ -334,6 +339,20 @@ namespace pdfem
       restore_state(const StateArchive &state)
       {
         (void)state;
+      }
+
+      /**
+       * This rank's share of how far the smooth degradation has gone at
+       * @p u (DegradationState; the switch threshold is
+       * @p onset_fraction times the onset stretch). By default: not
+       * available (the model does not degrade smoothly).
+       */
+      virtual DegradationState
+      degradation_state(const NodalField<dim> &u, double onset_fraction) const
+      {
+        (void)u;
+        (void)onset_fraction;
+        return {};
       }
       /// @}
 

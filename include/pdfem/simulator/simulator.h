@@ -95,7 +95,8 @@ namespace pdfem
   /**
    * What the driver and criterion check of a run: @p model_name and
    * whether it is @p nonlinear, the @p density (a mass exists), the linear
-   * solver (whether it assembles the coupled matrix).
+   * solver (whether it assembles the coupled matrix), whether the model
+   * degrades smoothly.
    */
   Drivers::RunTraits
   make_run_traits(const std::string       &file,
@@ -104,7 +105,8 @@ namespace pdfem
                   bool                     nonlinear,
                   double                   density,
                   const Solvers::Settings &linear_solver,
-                  const std::string       &driver_name);
+                  const std::string       &driver_name,
+                  bool                     smooth_degradation = false);
 
   /**
    * Check that @p driver, @p criterion (nullptr: none) and the rest of the
