@@ -178,7 +178,6 @@ namespace pdfem
       PDModels::DegradationState state =
         s.model->degradation_state(s.nodal_field(s.u_ghosted), onset_fraction);
       const MPI_Comm comm = s.comm;
-      state.available     = Utilities::MPI::max(int(state.available), comm) > 0;
       state.n_beyond_threshold =
         Utilities::MPI::sum(state.n_beyond_threshold, comm);
       state.n_failed        = Utilities::MPI::sum(state.n_failed, comm);

@@ -222,18 +222,17 @@ namespace pdfem
                         host.stability(),
                         host.load_derivative(false),
                         span);
-                      n_cuts += newton.outcome().n_cuts;
                     }
                   catch (const RunFailure &failure)
                     {
                       if (failure.exit_state != "unstable")
                         throw;
-                      n_cuts += newton.outcome().n_cuts;
                       onset = false;
                       announce("dynamic relaxation",
                                "Newton failed with its smallest step");
                       in_explicit = true;
                     }
+                  n_cuts += newton.outcome().n_cuts;
                   if (onset)
                     {
                       std::ostringstream why;

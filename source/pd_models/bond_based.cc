@@ -433,7 +433,6 @@ namespace pdfem
         DegradationState state;
         if (!degradation.active)
           return state;
-        state.available  = true;
         const double s_t = onset_fraction * degradation.onset;
         const auto  &x   = *this->region.position;
         for_each_bond([&](const std::size_t  j,

@@ -110,8 +110,9 @@ namespace pdfem
       }
 
       /// How far the PD model's smooth degradation has gone at solution()
-      /// (threshold: @p onset_fraction times the onset stretch; not
-      /// available unless the model degrades smoothly). Collective.
+      /// (threshold: @p onset_fraction times the onset stretch; all 0
+      /// unless the model degrades smoothly, RunTraits::smooth_degradation).
+      /// Collective.
       virtual PDModels::DegradationState
       degradation_state(double onset_fraction)
       {

@@ -9,13 +9,12 @@ namespace pdfem
     /**
      * How far the smooth degradation of a PD model (bond based with
      * `Degradation = tanh`, specs/003 §1.4) has gone at a state, for drivers
-     * that switch on it (`adaptive`). Bonds are counted in both directions
-     * (each family holds its own), over all ranks.
+     * that switch on it (`adaptive`; Layout::smooth_degradation says
+     * whether a model has one, else all members are 0). Bonds are counted
+     * in both directions (each family holds its own), over all ranks.
      */
     struct DegradationState
     {
-      /// Does the model degrade smoothly (the members below mean something)?
-      bool available = false;
       /// Bonds whose stretch (the largest of the accepted states with an
       /// irreversible history) passed the switch threshold, a fraction of
       /// the onset stretch s_m; failed bonds included.

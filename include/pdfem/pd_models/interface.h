@@ -344,8 +344,8 @@ namespace pdfem
       /**
        * This rank's share of how far the smooth degradation has gone at
        * @p u (DegradationState; the switch threshold is
-       * @p onset_fraction times the onset stretch). By default: not
-       * available (the model does not degrade smoothly).
+       * @p onset_fraction times the onset stretch). By default all 0 (the
+       * model does not degrade smoothly: Layout::smooth_degradation).
        */
       virtual DegradationState
       degradation_state(const NodalField<dim> &u, double onset_fraction) const
