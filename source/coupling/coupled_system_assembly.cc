@@ -271,6 +271,7 @@ namespace pdfem
     void
     CoupledSystem<dim>::Impl::assemble_tangent()
     {
+      solver.matrix_changed();
       matrix = 0.;
       // FE cells: the owned rows of the unconstrained FE matrix (assembled
       // once), with prescribed rows and columns dropped. Rows are read as

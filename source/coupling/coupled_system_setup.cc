@@ -258,6 +258,7 @@ namespace pdfem
                                  true);
             }
           sp.compress();
+          solver.matrix_changed();
           matrix.reinit(sp);
           n_matrix_entries = matrix.n_nonzero_elements();
         }

@@ -4,6 +4,7 @@
 #include <pdfem/base/exceptions.h>
 #include <pdfem/base/json_writer.h>
 #include <pdfem/base/parameter_tools.h>
+#include <pdfem/base/state_archive.h>
 #include <pdfem/drivers/dynamic_relaxation.h>
 #include <pdfem/drivers/interface.h>
 #include <pdfem/drivers/newton_driver.h>
@@ -152,6 +153,12 @@ namespace pdfem
           row.push_back(state.degradation);
         }
 
+        bool
+        resumable() const override
+        {
+          return true;
+        }
+
         void
         run(Host &host) override
         {
@@ -163,12 +170,15 @@ namespace pdfem
           const bool on_onset = parameters.adaptive_to_explicit == "onset";
           const bool discard_onset_state =
             parameters.adaptive_onset_state == "discard";
-          double       onset_load                = 0.;
-          double       t                         = 0.;
-          unsigned int step                      = 1;
-          state                                  = host.degradation_state(f);
-          PDModels::DegradationState baseline    = state;
-          const auto                 record_step = [&](const StepRecord &record,
+          double       onset_load             = 0.;
+          double       t                      = 0.;
+          unsigned int step                   = 1;
+          state                               = host.degradation_state(f);
+          PDModels::DegradationState baseline = state;
+          // in the explicit stage; a step was recorded since the last
+          // checkpoint boundary
+          bool       in_explicit = false, recorded = false;
+          const auto record_step = [&](const StepRecord &record,
                                        const bool        in_explicit) {
             switched_row  = in_explicit != explicit_mode;
             explicit_mode = in_explicit;
@@ -176,9 +186,62 @@ namespace pdfem
             if (!in_explicit)
               newton_iterations += record.newton_iterations;
             host.after_equilibrium(record, false);
-            t    = record.load_factor;
-            step = record.step + 1;
+            t        = record.load_factor;
+            step     = record.step + 1;
+            recorded = true;
           };
+          // Checkpoint and restart: the scheme's own state beside the Newton
+          // span's (when the boundary is inside one: its first step and
+          // load factor, so that a restart goes on with the same span).
+          const StateArchive *restart = host.restart_state();
+          const auto          save = [&](StateArchive &a, const bool in_span) {
+            a.put("adaptive/explicit", in_explicit);
+            a.put("adaptive/in span", in_span);
+            a.put("adaptive/load factor", t);
+            a.put("adaptive/step", step);
+            a.put("adaptive/baseline", baseline);
+            a.put("adaptive/state", state);
+            a.put("adaptive/explicit row", explicit_mode);
+            a.put("adaptive/switched row", switched_row);
+            a.put("adaptive/quiet", n_quiet);
+            a.put("adaptive/counts",
+                  std::vector<unsigned long>{n_implicit_steps,
+                                             n_explicit_steps,
+                                             n_switches,
+                                             newton_iterations,
+                                             n_cuts,
+                                             first_switch_step,
+                                             relaxation.iterations()});
+            a.put("adaptive/first switch load", first_switch_load);
+          };
+          if (restart)
+            {
+              const StateArchive &a = *restart;
+              in_explicit           = a.get<bool>("adaptive/explicit");
+              t                     = a.get<double>("adaptive/load factor");
+              step                  = a.get<unsigned int>("adaptive/step");
+              baseline = a.get<PDModels::DegradationState>("adaptive/baseline");
+              state    = a.get<PDModels::DegradationState>("adaptive/state");
+              explicit_mode = a.get<bool>("adaptive/explicit row");
+              switched_row  = a.get<bool>("adaptive/switched row");
+              n_quiet       = a.get<unsigned int>("adaptive/quiet");
+              const auto counts =
+                a.get_vector<unsigned long>("adaptive/counts");
+              if (counts.size() != 7)
+                throw InputError("",
+                                 "--restart",
+                                 "the checkpoint's adaptive state is damaged");
+              n_implicit_steps  = counts[0];
+              n_explicit_steps  = counts[1];
+              n_switches        = counts[2];
+              newton_iterations = counts[3];
+              n_cuts            = counts[4];
+              first_switch_step = counts[5];
+              relaxation.resume_iterations(counts[6]);
+              first_switch_load = a.get<double>("adaptive/first switch load");
+              if (!a.get<bool>("adaptive/in span"))
+                restart = nullptr; // no Newton span to go on with
+            }
           const auto announce = [&](const std::string &to,
                                     const std::string &why) {
             ++n_switches;
@@ -188,7 +251,6 @@ namespace pdfem
             host.report(s.str());
           };
 
-          bool in_explicit = false;
           while (t < 1. - 1e-12)
             {
               if (!in_explicit)
@@ -198,6 +260,25 @@ namespace pdfem
                   span.increment  = 1. / parameters.adaptive_implicit_steps;
                   span.first_step = step;
                   span.follow_snap_backs = false;
+                  if (restart)
+                    {
+                      span.begin = restart->get<double>("adaptive/span begin");
+                      span.first_step =
+                        restart->get<unsigned int>("adaptive/span first step");
+                      span.resume.from = restart;
+                      restart          = nullptr;
+                    }
+                  span.resume.boundary =
+                    [&, span_begin = span.begin, span_first = span.first_step](
+                      const SaveState &newton_save) {
+                      host.step_boundary([&](StateArchive &a) {
+                        newton_save(a);
+                        save(a, true);
+                        a.put("adaptive/span begin", span_begin);
+                        a.put("adaptive/span first step", span_first);
+                      });
+                      recorded = false;
+                    };
                   // The onset test on each converged Newton state, before
                   // it is accepted (discarded) or after (kept).
                   bool                       onset = false;
@@ -255,6 +336,9 @@ namespace pdfem
                   continue;
                 }
               // explicit: relaxed increments of (1 - t_n) / N_e
+              if (recorded)
+                host.step_boundary([&](StateArchive &a) { save(a, false); });
+              recorded = false;
               const double dt =
                 (1. - first_switch_load) / parameters.adaptive_explicit_steps;
               const double t_new = t + dt > 1. - 1e-12 ? 1. : t + dt;

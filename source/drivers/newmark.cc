@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/exceptions.h>
 #include <pdfem/base/json_writer.h>
+#include <pdfem/base/state_archive.h>
 #include <pdfem/drivers/interface.h>
 #include <pdfem/drivers/newmark.h>
 
@@ -26,7 +27,8 @@ namespace pdfem
                  Vector                 &U,
                  const Vector           &v0,
                  const OnStep           &on_step,
-                 const AfterStep        &after_step)
+                 const AfterStep        &after_step,
+                 const Resume           &resume)
     {
       const double dt = settings.time_step;
       // HHT-alpha (Hilber, Hughes & Taylor 1977): alpha in [-1/3, 0] damps
@@ -68,45 +70,90 @@ namespace pdfem
         time_spent.factorize += seconds_since(start);
       };
 
-      // t = 0: a0 from M a0 = f_ext - f_int on the free DoFs.
-      system.apply_dirichlet(U, 0.);
-      V = v0;
-      zero_held(V);
-      system.internal_force(U, F_int);
-      system.external_force(0., F_ext);
-      R = F_ext;
-      R -= F_int;
-      zero_held(R);
-      R_old = R;
-      if (consistent)
+      EnergyAccount energy;
+      DynamicRecord record;
+      unsigned int  first = 1;
+      // K_N is factorised before the next step.
+      bool refactor = true;
+      if (resume.from)
         {
-          auto start = clock::now();
-          system.factorize_effective(1., 0., true);
-          ++factorizations;
-          time_spent.factorize += seconds_since(start);
-          start = clock::now();
-          system.solve_effective(A, R);
-          time_spent.solve += seconds_since(start);
+          // Everything the loop carries from one step to the next, as it
+          // was at the checkpoint.
+          const StateArchive &state = *resume.from;
+          first          = state.get<unsigned int>("driver/next step");
+          factorizations = state.get<unsigned int>("driver/factorizations");
+          state.get_owned("driver/v", V);
+          state.get_owned("driver/a", A);
+          state.get_owned("driver/f_int", F_int);
+          state.get_owned("driver/f_ext", F_ext);
+          state.get_owned("driver/r_old", R_old);
+          held = state.get_vector<char>("driver/held");
+          if (held.size() != n)
+            throw InputError("",
+                             "--restart",
+                             "the checkpoint's Newmark state does not fit "
+                             "this run's vectors");
+          energy.load(state, "driver/energy/", U);
+          // The run left alone reuses its factorisation here unless bonds
+          // broke in the last step: a restart's first one replaces it and
+          // is not counted.
+          if (!state.get<bool>("driver/refactor") &&
+              settings.reuse_factorization)
+            --factorizations;
         }
       else
         {
-          A               = R;
-          const double *m = M.begin();
-          double       *a = A.begin();
-          for (std::size_t i = 0; i < n; ++i)
-            a[i] = held[i] ? 0. : a[i] / m[i];
+          // t = 0: a0 from M a0 = f_ext - f_int on the free DoFs.
+          system.apply_dirichlet(U, 0.);
+          V = v0;
+          zero_held(V);
+          system.internal_force(U, F_int);
+          system.external_force(0., F_ext);
+          R = F_ext;
+          R -= F_int;
+          zero_held(R);
+          R_old = R;
+          if (consistent)
+            {
+              auto start = clock::now();
+              system.factorize_effective(1., 0., true);
+              ++factorizations;
+              time_spent.factorize += seconds_since(start);
+              start = clock::now();
+              system.solve_effective(A, R);
+              time_spent.solve += seconds_since(start);
+            }
+          else
+            {
+              A               = R;
+              const double *m = M.begin();
+              double       *a = A.begin();
+              for (std::size_t i = 0; i < n; ++i)
+                a[i] = held[i] ? 0. : a[i] / m[i];
+            }
+          energy.start(U, F_int, F_ext, held, kinetic(), comm);
+          record.time_step = dt;
+          energy.record(record);
+          on_step(record);
         }
-      EnergyAccount energy;
-      energy.start(U, F_int, F_ext, held, kinetic(), comm);
-      DynamicRecord record;
-      record.time_step = dt;
-      energy.record(record);
-      on_step(record);
+      const auto save = [&](StateArchive &state, const unsigned int step) {
+        state.put("driver/next step", step);
+        state.put("driver/factorizations", factorizations);
+        state.put_owned("driver/v", V);
+        state.put_owned("driver/a", A);
+        state.put_owned("driver/f_int", F_int);
+        state.put_owned("driver/f_ext", F_ext);
+        state.put_owned("driver/r_old", R_old);
+        state.put("driver/held", held);
+        state.put("driver/refactor", refactor);
+        energy.save(state, "driver/energy/");
+      };
 
-      bool       refactor   = true;
       const auto loop_start = clock::now();
-      for (unsigned int step = 1; step <= n_steps; ++step)
+      for (unsigned int step = first; step <= n_steps; ++step)
         {
+          if (step > first && resume.boundary)
+            resume.boundary([&](StateArchive &state) { save(state, step); });
           const double t = step * dt;
           if (refactor || !settings.reuse_factorization)
             {
@@ -314,6 +361,18 @@ namespace pdfem
                              "amg or ilu (or Type = direct)");
         }
 
+
+        bool
+        resumable() const override
+        {
+          return true;
+        }
+
+        void
+        run(Host &host) override
+        {
+          integrate(host, resume_through(host));
+        }
 
         void
         write_summary(IO::JsonWriter &json) const override

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/state_archive.h>
 #include <pdfem/drivers/interface.h>
 #include <pdfem/drivers/newton_driver.h>
 
@@ -165,8 +166,36 @@ namespace pdfem
       double                  dt    = base;
       unsigned int            level = 0, successes = 0, step = 0;
       const double            t_end = span.end - 1e-12;
+      if (span.resume.from)
+        {
+          // u is the checkpoint's solution, the last recorded state.
+          const StateArchive &state = *span.resume.from;
+          state.get_owned("driver/previous", previous);
+          t          = state.get<double>("driver/load factor");
+          t_previous = state.get<double>("driver/previous load factor");
+          dt         = state.get<double>("driver/increment");
+          level      = state.get<unsigned int>("driver/cuts");
+          successes  = state.get<unsigned int>("driver/successes");
+          step       = state.get<unsigned int>("driver/steps");
+          result     = state.get<NewtonOutcome>("driver/outcome");
+        }
+      const auto save = [&](StateArchive &state) {
+        state.put_owned("driver/previous", previous);
+        state.put("driver/load factor", t);
+        state.put("driver/previous load factor", t_previous);
+        state.put("driver/increment", dt);
+        state.put("driver/cuts", level);
+        state.put("driver/successes", successes);
+        state.put("driver/steps", step);
+        state.put("driver/outcome", result);
+      };
+      // A state was recorded since the last step boundary.
+      bool recorded = false;
       while (t < t_end)
         {
+          if (recorded && span.resume.boundary)
+            span.resume.boundary(save);
+          recorded           = false;
           const double t_new = std::min(span.end, t + dt);
           // Predictor: the secant through the last two converged states
           // (the free DoFs follow the load instead of waiting for Newton).
@@ -238,6 +267,7 @@ namespace pdfem
                   dt        = std::min(base, dt / settings.step_cut_factor);
                   successes = 0;
                 }
+              recorded = true;
               continue;
             }
           successes = 0;
@@ -341,6 +371,7 @@ namespace pdfem
                   level     = 0;
                   dt        = base;
                   successes = 0;
+                  recorded  = true;
                   continue;
                 }
             }
@@ -460,7 +491,8 @@ namespace pdfem
       const unsigned int                                  max_steps,
       const std::function<void(const StepRecord &)>      &on_step,
       StabilityInterface                                 *stability,
-      const std::function<void(const StabilityReport &)> &on_check)
+      const std::function<void(const StabilityReport &)> &on_check,
+      const Resume                                       &resume)
     {
       result = NewtonOutcome();
       SystemInterface::Vector r, dq, dr, w, q, last = u, increment;
@@ -469,37 +501,67 @@ namespace pdfem
       system.initialize_vector(dr);
       system.initialize_vector(q);
       // The constraint measures the free DoFs only.
-      const auto free_part = free_part_of(system);
-      // ---- first step: load control
-      StepRecord   first;
-      const double t0 = 1. / std::max(1u, settings.load_steps);
-      first.step      = 1;
-      first.time = first.load_factor = t0;
-      // tangent predictor u + t0 K^-1 dr/dt: under hard loading, the
-      // prescribed values alone would stretch the bonds next to the
-      // boundary layer far into softening
-      system.residual(u, 0., r, true);
-      load_derivative(u, 0., q);
-      system.solve_linear(dq, q);
-      u.add(t0, dq);
-      system.apply_dirichlet(u, t0);
-      if (!solve_step(system, u, t0, first))
-        throw RunFailure("diverged",
-                         "arc length: the first, load-controlled step "
-                         "does not converge");
-      increment = u;
-      increment -= last;
-      free_part(increment);
-      double dl = increment.l2_norm(), lambda = t0;
-      last                    = u;
-      result.last_stable_load = lambda;
-      if (stability != nullptr && on_check)
-        on_check(stability->check_stability());
-      on_step(first);
+      const auto   free_part = free_part_of(system);
+      double       dl = 0., lambda = 0.;
+      unsigned int step = 2;
+      // A point was recorded since the last step boundary.
+      bool recorded = false;
+      if (resume.from)
+        {
+          // u is the checkpoint's solution, the last converged point.
+          const StateArchive &state = *resume.from;
+          system.initialize_vector(increment);
+          state.get_owned("driver/increment", increment);
+          dl     = state.get<double>("driver/arc length");
+          lambda = state.get<double>("driver/load factor");
+          step   = state.get<unsigned int>("driver/next step");
+          result = state.get<NewtonOutcome>("driver/outcome");
+        }
+      else
+        {
+          // ---- first step: load control
+          StepRecord   first;
+          const double t0 = 1. / std::max(1u, settings.load_steps);
+          first.step      = 1;
+          first.time = first.load_factor = t0;
+          // tangent predictor u + t0 K^-1 dr/dt: under hard loading, the
+          // prescribed values alone would stretch the bonds next to the
+          // boundary layer far into softening
+          system.residual(u, 0., r, true);
+          load_derivative(u, 0., q);
+          system.solve_linear(dq, q);
+          u.add(t0, dq);
+          system.apply_dirichlet(u, t0);
+          if (!solve_step(system, u, t0, first))
+            throw RunFailure("diverged",
+                             "arc length: the first, load-controlled step "
+                             "does not converge");
+          increment = u;
+          increment -= last;
+          free_part(increment);
+          dl                      = increment.l2_norm();
+          lambda                  = t0;
+          last                    = u;
+          result.last_stable_load = lambda;
+          if (stability != nullptr && on_check)
+            on_check(stability->check_stability());
+          on_step(first);
+          recorded = true;
+        }
+      const auto save = [&](StateArchive &state) {
+        state.put_owned("driver/increment", increment);
+        state.put("driver/arc length", dl);
+        state.put("driver/load factor", lambda);
+        state.put("driver/next step", step);
+        state.put("driver/outcome", result);
+      };
 
       unsigned int level = 0;
-      for (unsigned int step = 2; step <= max_steps && lambda < 1.;)
+      while (step <= max_steps && lambda < 1.)
         {
+          if (recorded && resume.boundary)
+            resume.boundary(save);
+          recorded = false;
           StepRecord record;
           record.step = step;
           double     lam;
@@ -548,6 +610,7 @@ namespace pdfem
             }
           on_step(record);
           ++step;
+          recorded = true;
         }
     }
 
@@ -597,6 +660,12 @@ namespace pdfem
           return driver ? &driver->outcome() : nullptr;
         }
 
+        bool
+        resumable() const override
+        {
+          return true;
+        }
+
       protected:
         std::unique_ptr<NewtonDriver> driver;
         std::string                   input_file;
@@ -616,6 +685,8 @@ namespace pdfem
           // one): the host hears of it before the state.
           const bool checked =
             parameters.stability_check && host.stability() != nullptr;
+          NewtonDriver::Span span;
+          span.resume = resume_through(host);
           driver->run(
             host.system(),
             host.solution(),
@@ -625,7 +696,8 @@ namespace pdfem
               host.after_equilibrium(record, false);
             },
             host.stability(),
-            host.load_derivative(false));
+            host.load_derivative(false),
+            span);
         }
       };
 
@@ -656,7 +728,8 @@ namespace pdfem
             host.stability(),
             [&host](const StabilityReport &report) {
               host.after_stability_check(report);
-            });
+            },
+            resume_through(host));
         }
       };
     } // namespace

@@ -132,10 +132,10 @@ namespace pdfem
                        setup.restart_from.empty() ? "Output/Checkpoint steps" :
                                                     "--restart",
                        "a run of Driver/Type = " + setup.driver.type +
-                         " cannot be checkpointed and restarted yet",
-                       "checkpoints with the static, quasi-static and "
-                       "explicit drivers; Checkpoint steps = 0 and "
-                       "Checkpoint minutes = 0 otherwise");
+                         " cannot be checkpointed and restarted (the "
+                         "driver does not save its loop state)",
+                       "a driver of pdfem (they all can), or Checkpoint "
+                       "steps = 0 and Checkpoint minutes = 0");
   }
 
   template <int dim>

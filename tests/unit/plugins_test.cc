@@ -194,15 +194,13 @@ namespace
     EXPECT_NO_THROW(mcts->check({"scene.prm", false, "quasi-static"}));
   }
 
-  /// A program's run with no parameter file: a pure FE bar pulled at its
-  /// right end, the program's own driver and postprocessor.
-  TEST(Simulator, RunsAProgramsOwnSetUpAndPlugins)
+  /// A pure FE bar pulled at its right end (1 MPa, E = 1 GPa, nu = 0),
+  /// driven by the program's own driver, writing into @p folder.
+  void
+  make_pulled_bar(RunSetup<2> &setup, const MPI_Comm comm, const char *folder)
   {
-    const MPI_Comm comm = MPI_COMM_WORLD;
-    RunSetup<2>    setup;
-    setup.name = "plugins_test";
-    setup.out_dir =
-      (std::filesystem::temp_directory_path() / "pdfem_plugins_test").string();
+    setup.name    = "plugins_test";
+    setup.out_dir = (std::filesystem::temp_directory_path() / folder).string();
     std::filesystem::remove_all(setup.out_dir);
     dealii::GridGenerator::subdivided_hyper_rectangle(
       setup.create_triangulation(comm),
@@ -219,11 +217,43 @@ namespace
     y.name = "bottom", y.boundary_ids = {2}, y.component = 1,
     y.expression = "0";
     pull.name = "right", pull.boundary_ids = {1}, pull.component = 0,
-    pull.expression           = "1e6";
-    s.dirichlet               = {x, y};
-    s.traction                = {pull};
-    setup.driver.type         = "test counting";
-    setup.write_vtu           = false;
+    pull.expression   = "1e6";
+    s.dirichlet       = {x, y};
+    s.traction        = {pull};
+    setup.driver.type = "test counting";
+    setup.write_vtu   = false;
+  }
+
+  /// A driver that does not say it can resume (Interface::resumable())
+  /// refuses checkpoints before any work.
+  TEST(Simulator, ADriverThatCannotResumeRefusesCheckpoints)
+  {
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    RunSetup<2>    setup;
+    make_pulled_bar(setup, comm, "pdfem_plugins_checkpoint_test");
+    setup.checkpoint_steps = 2;
+    try
+      {
+        Simulator<2> simulator(std::move(setup), comm);
+        FAIL() << "checkpoints were accepted for a driver that cannot resume";
+      }
+    catch (const InputError &e)
+      {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("Output/Checkpoint steps: a run of Driver/Type = "
+                            "test counting cannot be checkpointed"),
+                  std::string::npos)
+          << what;
+      }
+  }
+
+  /// A program's run with no parameter file: a pure FE bar pulled at its
+  /// right end, the program's own driver and postprocessor.
+  TEST(Simulator, RunsAProgramsOwnSetUpAndPlugins)
+  {
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    RunSetup<2>    setup;
+    make_pulled_bar(setup, comm, "pdfem_plugins_test");
     const unsigned int before = CountingDriver::runs;
 
     Simulator<2> simulator(std::move(setup), comm);

@@ -94,6 +94,13 @@ namespace pdfem
         return total_iterations;
       }
 
+      /// A restarted run: count on from @p n iterations (a checkpoint's).
+      void
+      resume_iterations(const unsigned long n)
+      {
+        total_iterations = n;
+      }
+
     private:
       Settings      settings;
       double        fixed_damping = -1.; // < 0: adaptive

@@ -3,6 +3,7 @@
 #define PDFEM_DRIVERS_NEWMARK_H
 
 #include <pdfem/drivers/dynamics.h>
+#include <pdfem/drivers/resume.h>
 #include <pdfem/drivers/settings.h>
 
 namespace pdfem
@@ -33,13 +34,20 @@ namespace pdfem
     public:
       explicit Newmark(const Settings &settings);
 
-      /// As CentralDifference::run().
+      /**
+       * As CentralDifference::run(), with @p resume going on from a
+       * checkpoint's state (v, a, the forces, the held DoFs, the HHT
+       * residual, the energy account): K_N is factorised again there, which
+       * n_factorizations() does not count (the run left alone reuses the
+       * factorisation it had).
+       */
       void
       run(DynamicSystemInterface        &system,
           SystemInterface::Vector       &u,
           const SystemInterface::Vector &v0,
           const OnStep                  &on_step,
-          const AfterStep               &after_step = {});
+          const AfterStep               &after_step = {},
+          const Resume                  &resume     = {});
 
       double
       time_step() const

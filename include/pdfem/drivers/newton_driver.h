@@ -2,6 +2,7 @@
 #ifndef PDFEM_DRIVERS_NEWTON_DRIVER_H
 #define PDFEM_DRIVERS_NEWTON_DRIVER_H
 
+#include <pdfem/drivers/resume.h>
 #include <pdfem/drivers/settings.h>
 #include <pdfem/drivers/static_driver.h>
 #include <pdfem/drivers/system_interface.h>
@@ -122,6 +123,11 @@ namespace pdfem
         /// ends the span at the state before (which @p u then holds again),
         /// this one neither recorded nor accepted.
         std::function<bool(const StepRecord &)> stop_before;
+        /// Checkpoint and restart: the loop state (the state before the
+        /// last one, load factors, increment, cuts, outcome) is saved at
+        /// the boundary after each recorded state; @p u must then be the
+        /// checkpoint's solution.
+        Resume resume;
       };
 
       /**
@@ -181,7 +187,9 @@ namespace pdfem
        * failing step halves Delta l (`Max step cuts` in a row). The run ends
        * when the load factor reaches 1, or after @p max_steps steps.
        * Every converged state is checked (StabilityReport in @p on_check,
-       * not rejected: past a fold the path is unstable by nature).
+       * not rejected: past a fold the path is unstable by nature). With
+       * @p resume the run goes on from a checkpoint's state (u, the last
+       * increment, the arc length, the load factor).
        */
       void
       run_arc_length(
@@ -212,7 +220,8 @@ namespace pdfem
         unsigned int                                        max_steps,
         const std::function<void(const StepRecord &)>      &on_step,
         StabilityInterface                                 *stability,
-        const std::function<void(const StabilityReport &)> &on_check = {});
+        const std::function<void(const StabilityReport &)> &on_check = {},
+        const Resume                                       &resume   = {});
 
     private:
       /// One arc-length step from the converged (last, lambda): predictor

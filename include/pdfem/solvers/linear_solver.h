@@ -10,10 +10,12 @@
 
 namespace dealii
 {
+  class SolverControl;
   namespace TrilinosWrappers
   {
     class SparseMatrix;
     class PreconditionAMG;
+    class SolverDirect;
     namespace MPI
     {
       class Vector;
@@ -50,6 +52,9 @@ namespace pdfem
       /// Solve with the assembled @p K: direct, or GMRES or CG with ML AMG
       /// or ILU of K. Returns the number of iterations (1 for direct). GMRES
       /// stops at |b - K x| <= max(tolerance |b|, @p allowed_residual).
+      /// The direct path keeps K's factorisation for the next solve with
+      /// the same matrix object until matrix_changed(); K must outlive
+      /// the solver (or matrix_changed() be called before K goes).
       unsigned int
       solve(const dealii::TrilinosWrappers::SparseMatrix &K,
             dealii::TrilinosWrappers::MPI::Vector        &x,
@@ -77,6 +82,23 @@ namespace pdfem
             const dealii::TrilinosWrappers::SparseMatrix &auxiliary,
             const Operator                               &block_jacobi = {},
             double allowed_residual                                    = 0.);
+
+      /**
+       * The assembled matrix given to solve() has new entries: the next
+       * direct solve factorises it again. Its owner calls this whenever it
+       * writes the matrix (a kept factorisation of the old entries would
+       * give wrong solutions), and before it rebuilds or frees it (the
+       * factorisation refers to it).
+       */
+      void
+      matrix_changed();
+
+      /// The number of direct factorisations so far.
+      unsigned int
+      n_factorizations() const
+      {
+        return factorizations;
+      }
 
       /// The matrix the AMG was built from has new entries: the next solve
       /// rebuilds the hierarchy.
@@ -123,6 +145,12 @@ namespace pdfem
       bool                                          amg_stale  = false;
       unsigned int                                  amg_fresh_iterations = 0;
       unsigned int                                  last_iterations      = 0;
+      /// The direct path's factorisation of *direct_matrix (nullptr: none
+      /// kept), and the control SolverDirect refers to.
+      std::unique_ptr<dealii::SolverControl>                  direct_control;
+      std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> direct;
+      const dealii::TrilinosWrappers::SparseMatrix *direct_matrix  = nullptr;
+      unsigned int                                  factorizations = 0;
     };
   } // namespace Solvers
 } // namespace pdfem

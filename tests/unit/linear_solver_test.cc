@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// LinearSolver's direct path keeps a matrix's factorisation for later solves
+// with the same matrix and factorises again after matrix_changed(): solves
+// after a change must use the new entries (a kept factorisation of the old
+// ones would give the old solution).
+#include <pdfem/solvers/linear_solver.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <gtest/gtest.h>
+
+namespace
+{
+  using namespace dealii;
+
+  /// The n x n tridiagonal matrix (-1, d, -1) on this rank's rows.
+  void
+  make_tridiagonal(TrilinosWrappers::SparseMatrix &A,
+                   const IndexSet                 &owned,
+                   const double                    d)
+  {
+    const unsigned int                n = owned.size();
+    TrilinosWrappers::SparsityPattern sp(owned, MPI_COMM_WORLD);
+    for (const auto i : owned)
+      for (unsigned int j = (i > 0 ? i - 1 : 0);
+           j <= std::min(n - 1u, unsigned(i) + 1);
+           ++j)
+        sp.add(i, j);
+    sp.compress();
+    A.reinit(sp);
+    for (const auto i : owned)
+      for (unsigned int j = (i > 0 ? i - 1 : 0);
+           j <= std::min(n - 1u, unsigned(i) + 1);
+           ++j)
+        A.set(i, j, i == j ? d : -1.);
+    A.compress(VectorOperation::insert);
+  }
+
+  /// |A x - b| / |b|.
+  double
+  relative_residual(const TrilinosWrappers::SparseMatrix &A,
+                    const TrilinosWrappers::MPI::Vector  &x,
+                    const TrilinosWrappers::MPI::Vector  &b)
+  {
+    TrilinosWrappers::MPI::Vector r(b);
+    A.vmult(r, x);
+    r -= b;
+    return r.l2_norm() / b.l2_norm();
+  }
+
+  TEST(LinearSolver, DirectKeepsTheFactorisationUntilTheMatrixChanges)
+  {
+    for (const std::string package : {"mumps", "klu"})
+      {
+        const unsigned int n = 40;
+        const unsigned int rank =
+          Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+        const unsigned int n_ranks =
+          Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+        IndexSet owned(n);
+        owned.add_range(n * rank / n_ranks, n * (rank + 1) / n_ranks);
+        owned.compress();
+
+        // The matrices outlive the solver: its factorisation refers to them.
+        TrilinosWrappers::SparseMatrix A, B;
+        pdfem::Solvers::Settings       settings;
+        settings.type          = "direct";
+        settings.direct_solver = package;
+        pdfem::Solvers::LinearSolver solver(settings);
+
+        make_tridiagonal(A, owned, 3.);
+        TrilinosWrappers::MPI::Vector b(owned, MPI_COMM_WORLD), x(b), y(b);
+        for (const auto i : owned)
+          b[i] = 1. + 0.1 * i;
+        b.compress(VectorOperation::insert);
+
+        solver.solve(A, x, b);
+        EXPECT_LT(relative_residual(A, x, b), 1e-13) << package;
+        // A second right-hand side with the same matrix: no new
+        // factorisation.
+        TrilinosWrappers::MPI::Vector b2(b);
+        b2 *= -2.;
+        solver.solve(A, y, b2);
+        EXPECT_LT(relative_residual(A, y, b2), 1e-13) << package;
+        EXPECT_EQ(solver.n_factorizations(), 1u) << package;
+
+        // New entries: after matrix_changed() the solve uses them (called
+        // before the matrix is rebuilt: the factorisation refers to it).
+        solver.matrix_changed();
+        make_tridiagonal(A, owned, 5.);
+        solver.solve(A, x, b);
+        EXPECT_LT(relative_residual(A, x, b), 1e-13) << package;
+        EXPECT_EQ(solver.n_factorizations(), 2u) << package;
+
+        // Another matrix object is factorised, whatever the caller says.
+        make_tridiagonal(B, owned, 4.);
+        solver.solve(B, x, b);
+        EXPECT_LT(relative_residual(B, x, b), 1e-13) << package;
+        EXPECT_EQ(solver.n_factorizations(), 3u) << package;
+      }
+  }
+} // namespace
