@@ -48,6 +48,21 @@ run_case explicit TERM dynamics_wave_plate_plane_stress.prm --set "Driver/End ti
 grep -q "go on with --restart" "$work/explicit.log" || fail "explicit: the message does not say how to go on"
 # Newton with stability checks, many load steps
 run_case newton INT rnp_cracked_plate_hard.prm --set "Driver/Load steps=2000"
+[ -f "$work/newton/checkpoint/rank-0.state" ] || fail "newton: no checkpoint after SIGINT"
+
+# progress lines (user_guide.md, "Progress lines"): every step line names the largest reaction and
+# the time left (by load; a bound where cracks grow), and with Progress interval = 0 every Newton
+# iteration inside a step has a line
+"$pdfem" "$scenes/bond_based_softening.prm" --output "$work/progress" \
+  --set "Output/Progress interval=0" > "$work/progress.log" 2>&1 || fail "progress: the run failed"
+grep -Eq '^Step +3/10 .* reaction (left|right) = \(.*\) N  left ~[0-9.]+ s$' "$work/progress.log" \
+  || fail "progress: no reaction or time left in the step line"
+grep -Eq '^  load factor [0-9.e-]+: Newton iteration [0-9]+, \|r\|/\|f\| = ' "$work/progress.log" \
+  || fail "progress: no line from inside a step"
+"$pdfem" "$scenes/growth_load_control_separated.prm" --output "$work/progress_growth" \
+  > "$work/progress_growth.log" 2>&1
+grep -Eq '^Step +2/100 .* left <= [0-9.]+ s$' "$work/progress_growth.log" \
+  || fail "progress: a growth run's time left is not a bound"
 
 # the output folder removed during a run: the next field output fails, the run ends 'io error'
 # (exit status 3, one message naming the file), no crash

@@ -166,9 +166,11 @@ namespace pdfem
           relaxation_driver = std::make_unique<DynamicRelaxation>(parameters);
           NewtonDriver      &newton     = *newton_driver;
           DynamicRelaxation &relaxation = *relaxation_driver;
-          const double       f          = parameters.adaptive_onset_fraction;
-          const bool on_onset = parameters.adaptive_to_explicit == "onset";
-          const bool discard_onset_state =
+          newton.set_progress(host.progress_pulse());
+          relaxation.set_progress(host.progress_pulse());
+          const double f        = parameters.adaptive_onset_fraction;
+          const bool   on_onset = parameters.adaptive_to_explicit == "onset";
+          const bool   discard_onset_state =
             parameters.adaptive_onset_state == "discard";
           double       onset_load             = 0.;
           double       t                      = 0.;

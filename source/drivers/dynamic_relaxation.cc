@@ -136,6 +136,12 @@ namespace pdfem
           if (t_now == t && (norm <= settings.residual_tolerance * scale ||
                              (scale == 0. && norm == 0.)))
             break;
+          progress([&]() {
+            std::ostringstream s;
+            s << "  load factor " << t << ": relaxation iteration " << it
+              << ", |r|/|f| = " << record.relative_residual;
+            return s.str();
+          });
           if (it == settings.relaxation_max_iterations)
             {
               std::ostringstream s;
@@ -192,6 +198,7 @@ namespace pdfem
         }
       time_spent.solve += seconds_since(start);
       total_iterations += record.newton_iterations;
+      progress.restart();
       return record;
     }
 
@@ -239,6 +246,7 @@ namespace pdfem
         run(Host &host) override
         {
           driver = std::make_unique<DynamicRelaxation>(parameters);
+          driver->set_progress(host.progress_pulse());
           driver->run(
             host.system(),
             host.solution(),

@@ -96,6 +96,12 @@ namespace pdfem
           if (norm <= settings.residual_tolerance * scale ||
               (scale == 0. && norm == 0.))
             return true;
+          progress([&]() {
+            std::ostringstream s;
+            s << "  load factor " << t << ": Newton iteration " << it
+              << ", |r|/|f| = " << record.relative_residual;
+            return s.str();
+          });
           if (it == settings.max_iterations)
             return false;
           start = clock::now();
@@ -258,6 +264,7 @@ namespace pdfem
               last                    = u;
               result.last_stable_load = t;
               on_step(record);
+              progress.restart();
               if (span.stop_after && span.stop_after(record))
                 return t;
               // after two successes in a row, undo one cut
@@ -333,6 +340,13 @@ namespace pdfem
                       cuts = 0;
                       ++k;
                       ++result.n_path_states;
+                      progress([&]() {
+                        std::ostringstream s;
+                        s << "  following the path past the fold at load "
+                             "factor "
+                          << t << ": state " << k << ", load factor " << lam;
+                        return s.str();
+                      });
                       // easy steps lengthen the arc: the unstable part of
                       // the path can be long compared with the last step
                       if (path.newton_iterations <= 3)
@@ -609,6 +623,7 @@ namespace pdfem
                 on_check(result.last_check);
             }
           on_step(record);
+          progress.restart();
           ++step;
           recorded = true;
         }
@@ -681,6 +696,7 @@ namespace pdfem
         run(Host &host) override
         {
           driver = std::make_unique<NewtonDriver>(parameters);
+          driver->set_progress(host.progress_pulse());
           // Each recorded state passed the stability check (when there is
           // one): the host hears of it before the state.
           const bool checked =
@@ -717,6 +733,7 @@ namespace pdfem
                              "t w)",
                              "such loads, or the newton driver");
           driver = std::make_unique<NewtonDriver>(parameters);
+          driver->set_progress(host.progress_pulse());
           driver->run_arc_length(
             host.system(),
             host.solution(),

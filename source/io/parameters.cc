@@ -523,12 +523,19 @@ namespace pdfem
         "Write a checkpoint (the folder 'checkpoint' in the output folder) "
         "every this many steps; 0: not by count. SIGINT and SIGTERM write one "
         "too. 'pdfem scene.prm --restart <output folder>' goes on from it. "
-        "Static, quasi-static and explicit drivers.");
+        "Every driver of pdfem.");
       prm.declare_entry("Checkpoint minutes",
                         "0",
                         Double(0.),
                         "Write a checkpoint when this many minutes of wall "
                         "time passed since the last one; 0: not by time.");
+      prm.declare_entry("Progress interval",
+                        "5",
+                        Double(0.),
+                        "Inside a long step (Newton iterations, a snap-back "
+                        "path, relaxation iterations) and between the lines "
+                        "of a dynamic run: a progress line at least every "
+                        "this many seconds [s] (0: at every iteration).");
       prm.leave_subsection();
     }
 
@@ -544,6 +551,7 @@ namespace pdfem
       patch_test         = prm.get("Patch test");
       checkpoint_steps   = prm.get_integer("Checkpoint steps");
       checkpoint_minutes = prm.get_double("Checkpoint minutes");
+      progress_interval  = prm.get_double("Progress interval");
       prm.leave_subsection();
     }
 

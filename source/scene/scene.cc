@@ -192,6 +192,7 @@ namespace pdfem
         setup.patch_test         = prm.output.patch_test;
         setup.checkpoint_steps   = prm.output.checkpoint_steps;
         setup.checkpoint_minutes = prm.output.checkpoint_minutes;
+        setup.progress_interval  = prm.output.progress_interval;
         setup.restart_from       = options.restart;
         auto &timings            = setup.timings;
 

@@ -100,6 +100,15 @@ namespace pdfem
       if (progress)
         *progress << line << std::endl;
     }
+    Drivers::ProgressPulse
+    progress_pulse() override
+    {
+      if (!progress)
+        return {};
+      return Drivers::ProgressPulse(
+        [this](const std::string &line) { report(line); },
+        setup.progress_interval);
+    }
     void
     after_stability_check(const Drivers::StabilityReport &report) override
     {
@@ -236,9 +245,11 @@ namespace pdfem
     /// Dynamic runs: the steps to the end time (once the step is known).
     unsigned int                          n_total_steps = 0;
     std::chrono::steady_clock::time_point run_start;
-    double                                criterion_time = 0.;
-    double                                output_time    = 0.;
-    std::string                           exit_state     = "completed";
+    /// When the last progress line of a dynamic run was printed.
+    mutable std::chrono::steady_clock::time_point last_progress_line;
+    double                                        criterion_time = 0.;
+    double                                        output_time    = 0.;
+    std::string                                   exit_state     = "completed";
     /// The checkpoint restarted from (nullptr: a fresh run).
     std::unique_ptr<StateArchive>         restart;
     unsigned int                          last_checkpoint_step = 0;

@@ -61,7 +61,8 @@ namespace pdfem
     const unsigned int n     = driver->planned_steps();
     const double       spent = seconds_since(setup.setup_start);
     *progress << "Step " << std::setw(4) << record.step;
-    if (n > 0)
+    // (Newton's step cuts add steps beyond the planned ones.)
+    if (n > 0 && record.step <= n)
       *progress << "/" << n;
     *progress << "  t = " << std::setw(10) << std::setprecision(4)
               << record.load_factor << "  iterations "
@@ -71,13 +72,35 @@ namespace pdfem
               << std::defaultfloat << "  broken bonds " << n_broken_bonds;
     if (criterion)
       *progress << criterion->progress(*cracks, assessment);
-    // Unknown step total: by load (the load factor grows from 0 to 1).
-    const double t = record.load_factor;
+    // The largest reaction, the load the body carries.
+    const auto reactions = coupled->reactions();
+    if (!reactions.empty())
+      {
+        const auto  names   = coupled->reaction_names();
+        std::size_t largest = 0;
+        for (std::size_t i = 1; i < reactions.size(); ++i)
+          if (reactions[i].norm() > reactions[largest].norm())
+            largest = i;
+        *progress << "  reaction "
+                  << (largest < names.size() ? names[largest] : "") << " = (";
+        for (unsigned int c = 0; c < dim; ++c)
+          *progress << (c > 0 ? ", " : "") << std::setprecision(3)
+                    << reactions[largest][c];
+        *progress << ") N";
+      }
+    // By load: the load factor grows from 0 to 1 (step cuts and snap-back
+    // paths make the step count a poor measure). A run that grows cracks
+    // holds the load while they grow and may end before its last step (it
+    // separates): there the step total is a bound, and so is the time left.
+    const double t      = record.load_factor;
+    const bool   growth = driver->grows_cracks() && n > 0;
     const double left =
-      n > 0 ? (record.step < n ? spent / record.step * (n - record.step) : 0.) :
-              (t > 0. && t < 1. ? spent / t * (1. - t) : 0.);
-    *progress << "  left ~" << std::fixed << std::setprecision(1) << left
-              << " s" << std::defaultfloat << std::endl;
+      growth ?
+        (record.step < n ? spent / record.step * (n - record.step) : 0.) :
+        (t > 0. && t < 1. ? spent / t * (1. - t) : 0.);
+    *progress << (growth ? "  left <= " : "  left ~") << std::fixed
+              << std::setprecision(1) << left << " s" << std::defaultfloat
+              << std::endl;
   }
 
   template <int dim>
@@ -86,9 +109,13 @@ namespace pdfem
     const Drivers::DynamicRecord &record,
     const unsigned long           n_broken_bonds) const
   {
+    // Every 5 % of the steps, and at least every Output/Progress interval.
     const unsigned int every = std::max(1u, n_total_steps / 20);
-    if (!progress || (record.step % every != 0 && record.step < n_total_steps))
+    if (!progress ||
+        (record.step % every != 0 && record.step < n_total_steps &&
+         seconds_since(last_progress_line) < setup.progress_interval))
       return;
+    last_progress_line = std::chrono::steady_clock::now();
     const internal::KeepFormat keep(*progress);
     const double               thickness = coupled->thickness();
     const double               spent     = seconds_since(run_start);

@@ -2,6 +2,7 @@
 #ifndef PDFEM_DRIVERS_DYNAMIC_RELAXATION_H
 #define PDFEM_DRIVERS_DYNAMIC_RELAXATION_H
 
+#include <pdfem/drivers/progress_pulse.h>
 #include <pdfem/drivers/resume.h>
 #include <pdfem/drivers/settings.h>
 #include <pdfem/drivers/static_driver.h>
@@ -94,6 +95,14 @@ namespace pdfem
         return total_iterations;
       }
 
+      /// Lines from inside a load step (relaxation iterations) through
+      /// @p pulse.
+      void
+      set_progress(const ProgressPulse &pulse)
+      {
+        progress = pulse;
+      }
+
       /// A restarted run: count on from @p n iterations (a checkpoint's).
       void
       resume_iterations(const unsigned long n)
@@ -106,6 +115,7 @@ namespace pdfem
       double        fixed_damping = -1.; // < 0: adaptive
       DriverTimings time_spent;
       unsigned long total_iterations = 0;
+      ProgressPulse progress;
     };
   } // namespace Drivers
 } // namespace pdfem

@@ -5,6 +5,7 @@
 #include <pdfem/base/plugins.h>
 #include <pdfem/drivers/dynamics.h>
 #include <pdfem/drivers/newton_driver.h>
+#include <pdfem/drivers/progress_pulse.h>
 #include <pdfem/drivers/quasi_static_driver.h>
 #include <pdfem/drivers/resume.h>
 #include <pdfem/drivers/settings.h>
@@ -126,6 +127,14 @@ namespace pdfem
       report(const std::string &line)
       {
         (void)line;
+      }
+
+      /// Lines from inside long steps, through report() at the run's
+      /// `Output/Progress interval` (none for a quiet run).
+      virtual ProgressPulse
+      progress_pulse()
+      {
+        return {};
       }
 
       /// The driver's state in the checkpoint this run restarts from

@@ -2,6 +2,7 @@
 #ifndef PDFEM_DRIVERS_NEWTON_DRIVER_H
 #define PDFEM_DRIVERS_NEWTON_DRIVER_H
 
+#include <pdfem/drivers/progress_pulse.h>
 #include <pdfem/drivers/resume.h>
 #include <pdfem/drivers/settings.h>
 #include <pdfem/drivers/static_driver.h>
@@ -168,6 +169,15 @@ namespace pdfem
       {
         return time_spent;
       }
+
+      /// Lines from inside a step (Newton iterations, the states of a
+      /// snap-back path) through @p pulse.
+      void
+      set_progress(const ProgressPulse &pulse)
+      {
+        progress = pulse;
+      }
+
       const NewtonOutcome &
       outcome() const
       {
@@ -250,6 +260,7 @@ namespace pdfem
       Settings      settings;
       DriverTimings time_spent;
       NewtonOutcome result;
+      ProgressPulse progress;
     };
   } // namespace Drivers
 } // namespace pdfem

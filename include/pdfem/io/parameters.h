@@ -163,6 +163,7 @@ namespace pdfem
       std::string  patch_test         = "auto"; // auto|true|false
       unsigned int checkpoint_steps   = 0;      // 0: not by count
       double       checkpoint_minutes = 0.;     // 0: not by time
+      double       progress_interval  = 5.;     // [s] within long steps
 
       static void
       declare(dealii::ParameterHandler &prm);

@@ -79,6 +79,9 @@ namespace pdfem
     /// (Drivers::Interface::resumable()).
     unsigned int checkpoint_steps   = 0;
     double       checkpoint_minutes = 0.;
+    /// A progress line at least every this many seconds inside long steps
+    /// and between the lines of a dynamic run (Drivers::ProgressPulse).
+    double progress_interval = 5.;
     /// Go on from the checkpoint in this folder (the output folder of the
     /// interrupted run, or its `checkpoint` folder); empty: a fresh run.
     std::string restart_from;
