@@ -109,25 +109,20 @@ namespace pdfem
       LeapfrogEnergy conserved;
       DynamicRecord  record;
       unsigned int   first = 1;
+      TimeLoopState  loop{V, A, F_int, F_ext, held, energy};
       if (resume.from)
         {
           // Everything the loop carries from one step to the next, as it
           // was at the checkpoint.
           const StateArchive &state = *resume.from;
-          first = state.get<unsigned int>("driver/next step");
-          state.get_owned("driver/v", V);
-          state.get_owned("driver/a", A);
-          state.get_owned("driver/f_int", F_int);
-          state.get_owned("driver/f_ext", F_ext);
-          held     = state.get_vector<char>("driver/held");
-          half     = state.get_vector<double>("driver/half");
+          first                     = loop.load(state, U);
+          half                      = state.get_vector<double>("driver/half");
           half_old = state.get_vector<double>("driver/half old");
-          if (held.size() != n || half.size() != n || half_old.size() != n)
+          if (half.size() != n || half_old.size() != n)
             throw InputError("",
                              "--restart",
                              "the checkpoint's explicit state does not fit "
                              "this run's vectors");
-          energy.load(state, "driver/energy/", U);
           conserved.load(state, "driver/leapfrog/", U);
         }
       else
@@ -151,17 +146,11 @@ namespace pdfem
           on_step(record);
         }
       const auto save = [&](StateArchive &state, const unsigned int step) {
-        state.put("driver/next step", step);
+        loop.save(state, step);
         state.put("driver/estimate", estimate);
         state.put("driver/time step", dt);
-        state.put_owned("driver/v", V);
-        state.put_owned("driver/a", A);
-        state.put_owned("driver/f_int", F_int);
-        state.put_owned("driver/f_ext", F_ext);
-        state.put("driver/held", held);
         state.put("driver/half", half);
         state.put("driver/half old", half_old);
-        energy.save(state, "driver/energy/");
         conserved.save(state, "driver/leapfrog/");
       };
 
@@ -322,17 +311,6 @@ namespace pdfem
         }
 
 
-        bool
-        resumable() const override
-        {
-          return true;
-        }
-
-        void
-        run(Host &host) override
-        {
-          integrate(host, resume_through(host));
-        }
 
         std::string
         first_step_note(const DynamicRecord &record) const override

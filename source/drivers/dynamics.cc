@@ -459,6 +459,35 @@ namespace pdfem
         scale        = v[4];
         strain_part  = v[5];
       }
+      void
+      TimeLoopState::save(StateArchive &state, const unsigned int next) const
+      {
+        state.put("driver/next step", next);
+        state.put_owned("driver/v", v);
+        state.put_owned("driver/a", a);
+        state.put_owned("driver/f_int", f_int);
+        state.put_owned("driver/f_ext", f_ext);
+        state.put("driver/held", held);
+        energy.save(state, "driver/energy/");
+      }
+
+      unsigned int
+      TimeLoopState::load(const StateArchive &state, const Vector &u)
+      {
+        const std::size_t n = held.size();
+        state.get_owned("driver/v", v);
+        state.get_owned("driver/a", a);
+        state.get_owned("driver/f_int", f_int);
+        state.get_owned("driver/f_ext", f_ext);
+        held = state.get_vector<char>("driver/held");
+        if (held.size() != n)
+          throw InputError("",
+                           "--restart",
+                           "the checkpoint's time integration state does not "
+                           "fit this run's vectors");
+        energy.load(state, "driver/energy/", u);
+        return state.get<unsigned int>("driver/next step");
+      }
     } // namespace internal
   }   // namespace Drivers
 } // namespace pdfem

@@ -198,6 +198,27 @@ namespace pdfem
                      bool                 explicit_scheme,
                      double               correlation,
                      InstabilityReport   &report);
+
+      /**
+       * What both time integrators carry from one step to the next
+       * (checkpoints): the next step, v, a, the forces, the held DoFs and
+       * the energy account, under "driver/".
+       */
+      struct TimeLoopState
+      {
+        Vector            &v, &a, &f_int, &f_ext;
+        std::vector<char> &held;
+        EnergyAccount     &energy;
+
+        void
+        save(StateArchive &state, unsigned int next_step) const;
+
+        /// Take it back (@p u: the checkpoint's solution, for the layout);
+        /// returns the next step. InputError if it does not fit the
+        /// run's vectors.
+        unsigned int
+        load(const StateArchive &state, const Vector &u);
+      };
     } // namespace internal
   }   // namespace Drivers
 } // namespace pdfem

@@ -74,26 +74,16 @@ namespace pdfem
       DynamicRecord record;
       unsigned int  first = 1;
       // K_N is factorised before the next step.
-      bool refactor = true;
+      bool          refactor = true;
+      TimeLoopState loop{V, A, F_int, F_ext, held, energy};
       if (resume.from)
         {
           // Everything the loop carries from one step to the next, as it
           // was at the checkpoint.
           const StateArchive &state = *resume.from;
-          first          = state.get<unsigned int>("driver/next step");
+          first                     = loop.load(state, U);
           factorizations = state.get<unsigned int>("driver/factorizations");
-          state.get_owned("driver/v", V);
-          state.get_owned("driver/a", A);
-          state.get_owned("driver/f_int", F_int);
-          state.get_owned("driver/f_ext", F_ext);
           state.get_owned("driver/r_old", R_old);
-          held = state.get_vector<char>("driver/held");
-          if (held.size() != n)
-            throw InputError("",
-                             "--restart",
-                             "the checkpoint's Newmark state does not fit "
-                             "this run's vectors");
-          energy.load(state, "driver/energy/", U);
           // The run left alone reuses its factorisation here unless bonds
           // broke in the last step: a restart's first one replaces it and
           // is not counted.
@@ -137,16 +127,10 @@ namespace pdfem
           on_step(record);
         }
       const auto save = [&](StateArchive &state, const unsigned int step) {
-        state.put("driver/next step", step);
+        loop.save(state, step);
         state.put("driver/factorizations", factorizations);
-        state.put_owned("driver/v", V);
-        state.put_owned("driver/a", A);
-        state.put_owned("driver/f_int", F_int);
-        state.put_owned("driver/f_ext", F_ext);
         state.put_owned("driver/r_old", R_old);
-        state.put("driver/held", held);
         state.put("driver/refactor", refactor);
-        energy.save(state, "driver/energy/");
       };
 
       const auto loop_start = clock::now();
@@ -362,17 +346,6 @@ namespace pdfem
         }
 
 
-        bool
-        resumable() const override
-        {
-          return true;
-        }
-
-        void
-        run(Host &host) override
-        {
-          integrate(host, resume_through(host));
-        }
 
         void
         write_summary(IO::JsonWriter &json) const override

@@ -20,7 +20,8 @@ namespace pdfem
      * A driver plugin that integrates in time with @p Integrator
      * (CentralDifference or Newmark): it needs a mass, grows cracks after
      * every step through the host's criterion, and reports the integrator's
-     * timings per step.
+     * timings per step; it resumes from checkpoints (the integrator saves
+     * its loop state, Drivers::Resume).
      */
     template <class Integrator>
     class TimeIntegrationRun : public Interface
@@ -69,19 +70,23 @@ namespace pdfem
                 {"eigenvalue", t.eigenvalue}};
       }
 
+      bool
+      resumable() const override
+      {
+        return true;
+      }
+
       void
       run(Host &host) override
       {
-        integrate(host);
+        integrate(host, resume_through(host));
       }
 
     protected:
       /// Make the integrator and run it over the host's system, from the
-      /// host's initial velocity; @p extra (a Drivers::Resume, for an
-      /// integrator that can resume) goes on to Integrator::run.
-      template <class... Extra>
+      /// host's initial velocity and the checkpoint's state (@p resume).
       void
-      integrate(Host &host, const Extra &...extra)
+      integrate(Host &host, const Resume &resume)
       {
         integrator = std::make_unique<Integrator>(parameters);
         SystemInterface::Vector v0;
@@ -96,7 +101,7 @@ namespace pdfem
           [&host](const SystemInterface::Vector &u, const double t) {
             return host.after_time_step(u, t);
           },
-          extra...);
+          resume);
       }
 
       std::unique_ptr<Integrator> integrator;
