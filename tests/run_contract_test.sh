@@ -50,6 +50,17 @@ grep -q "go on with --restart" "$work/explicit.log" || fail "explicit: the messa
 run_case newton INT rnp_cracked_plate_hard.prm --set "Driver/Load steps=2000"
 [ -f "$work/newton/checkpoint/rank-0.state" ] || fail "newton: no checkpoint after SIGINT"
 
+# --print-parameters with a scene: its resolved parameters (every --set applied), nothing run
+"$pdfem" "$scenes/bond_based_softening.prm" --set "Driver/Load steps=7" --print-parameters \
+  --output "$work/printed" > "$work/printed.prm" 2> "$work/printed.err" || fail "--print-parameters: exit status"
+grep -Eq '^ *set Load steps *= 7$' "$work/printed.prm" || fail "--print-parameters: the --set value is not printed"
+grep -Eq '^ *set Onset stretch *= 0.002$' "$work/printed.prm" || fail "--print-parameters: the scene's value is not printed"
+[ ! -e "$work/printed" ] || fail "--print-parameters: the scene was run"
+"$pdfem" "$work/printed.prm" --quiet --output "$work/printed_run" > /dev/null 2>&1 \
+  || fail "--print-parameters: its output is not a scene that runs"
+"$pdfem" "$scenes/bond_based_softening.prm" --set "Driver/Type=newtn" --print-parameters > /dev/null 2>&1
+[ $? -eq 2 ] || fail "--print-parameters: a bad choice was not refused"
+
 # progress lines (user_guide.md, "Progress lines"): every step line names the largest reaction and
 # the time left (by load; a bound where cracks grow), and with Progress interval = 0 every Newton
 # iteration inside a step has a line

@@ -25,7 +25,8 @@ namespace
          "Usage:\n"
          "  pdfem SCENE.prm [--output DIR] [--quiet] [--restart DIR]\n"
          "  mpirun -np N pdfem SCENE.prm ...\n"
-         "  pdfem --print-parameters | --list-plugins\n"
+         "  pdfem [SCENE.prm [--set ...]] --print-parameters\n"
+         "  pdfem --list-plugins\n"
          "  pdfem --help | --version\n\n"
          "Options:\n"
          "  --output DIR         write results into DIR (default: the "
@@ -40,7 +41,10 @@ namespace
          "                       (Output/Checkpoint steps, or a SIGINT/SIGTERM "
          "wrote it)\n"
          "  --print-parameters   every scene parameter with its default and "
-         "documentation\n"
+         "documentation;\n"
+         "                       with a scene: its parameters as the run "
+         "would use them\n"
+         "                       (every --set applied), nothing run\n"
          "  --list-plugins       every registered driver, crack criterion and "
          "postprocessor\n\n"
          "Outputs: history.csv (one row per step), summary.json (sizes, "
@@ -91,18 +95,14 @@ main(int argc, char **argv)
           return 0;
         }
       if (arg == "--print-parameters")
-        {
-          if (root)
-            pdfem::Parameters::print_all(std::cout);
-          return 0;
-        }
-      if (arg == "--list-plugins")
+        options.print_parameters = true;
+      else if (arg == "--list-plugins")
         {
           if (root)
             list_plugins(std::cout);
           return 0;
         }
-      if (arg == "--quiet" || arg == "-q")
+      else if (arg == "--quiet" || arg == "-q")
         options.quiet = true;
       else if (arg == "--set")
         {
@@ -157,6 +157,12 @@ main(int argc, char **argv)
                       << scene << "', '" << arg << "')\n";
           return 2;
         }
+    }
+  if (scene.empty() && options.print_parameters)
+    {
+      if (root)
+        pdfem::Parameters::print_all(std::cout);
+      return 0;
     }
   if (scene.empty())
     {

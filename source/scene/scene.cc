@@ -443,9 +443,23 @@ namespace pdfem
         return simulator.run();
       }
 
-      /// parameters.prm in @p out_dir (rank 0): the parameters as read, every
-      /// --set applied, the mesh file made absolute, so that `pdfem
-      /// out_dir/parameters.prm` repeats the run.
+      /// The parameters as read, every --set applied, the mesh file made
+      /// absolute, so that they repeat the run from any folder.
+      void
+      print_resolved(const Parameters::Scene &prm, std::ostream &out)
+      {
+        ParameterHandler &handler = *prm.handler;
+        handler.enter_subsection("Mesh");
+        handler.set("Input file",
+                    fs::absolute(resolve(prm.mesh.input_file, prm.base_dir))
+                      .lexically_normal()
+                      .string());
+        handler.leave_subsection();
+        handler.print_parameters(out, ParameterHandler::ShortPRM);
+      }
+
+      /// parameters.prm in @p out_dir (rank 0): print_resolved(), so that
+      /// `pdfem out_dir/parameters.prm` repeats the run.
       void
       save_parameters(const Parameters::Scene &prm,
                       const std::string       &out_dir,
@@ -453,19 +467,10 @@ namespace pdfem
       {
         std::string error;
         if (Utilities::MPI::this_mpi_process(comm) == 0)
-          {
-            ParameterHandler &handler = *prm.handler;
-            handler.enter_subsection("Mesh");
-            handler.set("Input file",
-                        fs::absolute(resolve(prm.mesh.input_file, prm.base_dir))
-                          .lexically_normal()
-                          .string());
-            handler.leave_subsection();
-            error = IO::write_atomically(
-              out_dir + "/parameters.prm", [&](std::ostream &out) {
-                handler.print_parameters(out, ParameterHandler::ShortPRM);
-              });
-          }
+          error = IO::write_atomically(out_dir + "/parameters.prm",
+                                       [&](std::ostream &out) {
+                                         print_resolved(prm, out);
+                                       });
         error = Utilities::MPI::broadcast(comm, error, 0);
         if (!error.empty())
           throw InputError(prm.file,
@@ -515,6 +520,13 @@ namespace pdfem
       try
         {
           const auto start = clock::now();
+          if (fs::path(file).extension() == ".in" && options.print_parameters)
+            throw InputError(file,
+                             "--print-parameters",
+                             "a PDLSM-FEM command file has no scene "
+                             "parameters to print",
+                             "a .prm scene (pdfem-convert makes one from "
+                             "the command file)");
           if (fs::path(file).extension() == ".in")
             {
               const IO::PDLSMFEMModel model = IO::read_pdlsm_fem(file);
@@ -526,6 +538,19 @@ namespace pdfem
             }
           Parameters::Scene prm;
           prm.read(file, options.overrides);
+          if (options.print_parameters)
+            {
+              // The plugins named are checked too (their own parameters).
+              if (prm.dim == 2)
+                plugins_of<2>(prm);
+#if PDFEM_WITH_3D
+              else
+                plugins_of<3>(prm);
+#endif
+              if (root)
+                print_resolved(prm, std::cout);
+              return ExitCode::completed;
+            }
           if (prm.dim == 2)
             return run_prm<2>(prm, options, comm, start);
 #if PDFEM_WITH_3D

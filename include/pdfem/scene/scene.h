@@ -31,6 +31,10 @@ namespace pdfem
       /// `--restart`: go on from the checkpoint in this output folder
       /// (which is then the output folder, unless --output names it).
       std::string restart;
+      /// `--print-parameters` with a scene: print its parameters as they
+      /// are resolved (every --set applied, the mesh file made absolute;
+      /// what parameters.prm of a run holds) and do nothing else.
+      bool print_parameters = false;
     };
 
     /** Exit codes of a run (also the `pdfem` process exit status). */
