@@ -258,7 +258,7 @@ namespace pdfem
                                  true);
             }
           sp.compress();
-          solver.matrix_changed();
+          solver.matrix_rebuilt();
           matrix.reinit(sp);
           n_matrix_entries = matrix.n_nonzero_elements();
         }

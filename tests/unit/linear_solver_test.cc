@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // LinearSolver's direct path keeps a matrix's factorisation for later solves
-// with the same matrix and factorises again after matrix_changed(): solves
+// with the same matrix, factorises again (numerically, the analysis kept)
+// after matrix_changed() and analyses again after matrix_rebuilt(): solves
 // after a change must use the new entries (a kept factorisation of the old
 // ones would give the old solution).
+#include <pdfem/base/exceptions.h>
 #include <pdfem/solvers/linear_solver.h>
 
 #include <deal.II/base/index_set.h>
@@ -89,19 +91,80 @@ namespace
         EXPECT_LT(relative_residual(A, y, b2), 1e-13) << package;
         EXPECT_EQ(solver.n_factorizations(), 1u) << package;
 
-        // New entries: after matrix_changed() the solve uses them (called
-        // before the matrix is rebuilt: the factorisation refers to it).
+        // New values in the same pattern: after matrix_changed() the
+        // solve uses them, with a new numeric factorisation and the same
+        // analysis.
+        for (const auto i : owned)
+          A.set(i, i, 5.);
+        A.compress(VectorOperation::insert);
         solver.matrix_changed();
-        make_tridiagonal(A, owned, 5.);
         solver.solve(A, x, b);
         EXPECT_LT(relative_residual(A, x, b), 1e-13) << package;
         EXPECT_EQ(solver.n_factorizations(), 2u) << package;
+        EXPECT_EQ(solver.n_analyses(), 1u) << package;
 
-        // Another matrix object is factorised, whatever the caller says.
+        // The matrix rebuilt (matrix_rebuilt() before, since the
+        // factorisation refers to it): analysed and factorised again.
+        solver.matrix_rebuilt();
+        make_tridiagonal(A, owned, 6.);
+        solver.solve(A, x, b);
+        EXPECT_LT(relative_residual(A, x, b), 1e-13) << package;
+        EXPECT_EQ(solver.n_factorizations(), 3u) << package;
+        EXPECT_EQ(solver.n_analyses(), 2u) << package;
+
+        // Another matrix object is analysed, whatever the caller says.
         make_tridiagonal(B, owned, 4.);
         solver.solve(B, x, b);
         EXPECT_LT(relative_residual(B, x, b), 1e-13) << package;
-        EXPECT_EQ(solver.n_factorizations(), 3u) << package;
+        EXPECT_EQ(solver.n_factorizations(), 4u) << package;
+        EXPECT_EQ(solver.n_analyses(), 3u) << package;
+      }
+  }
+  TEST(LinearSolver, DirectOnASingularMatrixFailsWithOneLine)
+  {
+    for (const std::string package : {"mumps", "klu"})
+      {
+        const unsigned int n = 10;
+        const unsigned int rank =
+          Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+        const unsigned int n_ranks =
+          Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+        IndexSet owned(n);
+        owned.add_range(n * rank / n_ranks, n * (rank + 1) / n_ranks);
+        owned.compress();
+        TrilinosWrappers::SparseMatrix A;
+        // A zero first row and column: exactly singular.
+        make_tridiagonal(A, owned, 2.);
+        for (const auto i : owned)
+          if (i == 0)
+            {
+              A.set(0, 0, 0.);
+              A.set(0, 1, 0.);
+            }
+          else if (i == 1)
+            A.set(1, 0, 0.);
+        A.compress(VectorOperation::insert);
+        pdfem::Solvers::Settings settings;
+        settings.type          = "direct";
+        settings.direct_solver = package;
+        pdfem::Solvers::LinearSolver  solver(settings);
+        TrilinosWrappers::MPI::Vector b(owned, MPI_COMM_WORLD), x(b);
+        for (const auto i : owned)
+          b[i] = 1.;
+        b.compress(VectorOperation::insert);
+        try
+          {
+            solver.solve(A, x, b);
+            ADD_FAILURE() << package << ": a singular matrix was solved";
+          }
+        catch (const pdfem::RunFailure &e)
+          {
+            EXPECT_EQ(e.exit_state, "singular matrix") << package;
+            const std::string what = e.what();
+            EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+            EXPECT_NE(what.find("the direct solver failed"), std::string::npos)
+              << what;
+          }
       }
   }
 } // namespace

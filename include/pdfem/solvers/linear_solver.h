@@ -10,12 +10,10 @@
 
 namespace dealii
 {
-  class SolverControl;
   namespace TrilinosWrappers
   {
     class SparseMatrix;
     class PreconditionAMG;
-    class SolverDirect;
     namespace MPI
     {
       class Vector;
@@ -53,8 +51,9 @@ namespace pdfem
       /// or ILU of K. Returns the number of iterations (1 for direct). GMRES
       /// stops at |b - K x| <= max(tolerance |b|, @p allowed_residual).
       /// The direct path keeps K's factorisation for the next solve with
-      /// the same matrix object until matrix_changed(); K must outlive
-      /// the solver (or matrix_changed() be called before K goes).
+      /// the same matrix object until matrix_changed() (and its symbolic
+      /// analysis until matrix_rebuilt()); K must outlive the solver (or
+      /// matrix_rebuilt() be called before K goes).
       unsigned int
       solve(const dealii::TrilinosWrappers::SparseMatrix &K,
             dealii::TrilinosWrappers::MPI::Vector        &x,
@@ -84,20 +83,36 @@ namespace pdfem
             double allowed_residual                                    = 0.);
 
       /**
-       * The assembled matrix given to solve() has new entries: the next
-       * direct solve factorises it again. Its owner calls this whenever it
-       * writes the matrix (a kept factorisation of the old entries would
-       * give wrong solutions), and before it rebuilds or frees it (the
-       * factorisation refers to it).
+       * The assembled matrix given to solve() has new values in the same
+       * sparsity pattern: the next direct solve factorises it again
+       * (numerically; the symbolic analysis of the pattern is kept). Its
+       * owner calls this whenever it writes the matrix (a kept
+       * factorisation of the old values would give wrong solutions).
        */
       void
       matrix_changed();
 
-      /// The number of direct factorisations so far.
+      /**
+       * The matrix given to solve() is rebuilt (a new sparsity pattern) or
+       * goes: the direct path forgets its analysis and factorisation, which
+       * refer to it. Its owner calls this before it reinitialises or frees
+       * the matrix.
+       */
+      void
+      matrix_rebuilt();
+
+      /// The number of direct numeric factorisations so far.
       unsigned int
       n_factorizations() const
       {
         return factorizations;
+      }
+
+      /// The number of direct symbolic analyses so far.
+      unsigned int
+      n_analyses() const
+      {
+        return analyses;
       }
 
       /// The matrix the AMG was built from has new entries: the next solve
@@ -147,10 +162,12 @@ namespace pdfem
       unsigned int                                  last_iterations      = 0;
       /// The direct path's factorisation of *direct_matrix (nullptr: none
       /// kept), and the control SolverDirect refers to.
-      std::unique_ptr<dealii::SolverControl>                  direct_control;
-      std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> direct;
-      const dealii::TrilinosWrappers::SparseMatrix *direct_matrix  = nullptr;
-      unsigned int                                  factorizations = 0;
+      /// The direct path's Amesos solver, its analysis of a matrix and,
+      /// while that matrix is unchanged, its factorisation.
+      struct DirectFactorization;
+      std::unique_ptr<DirectFactorization> direct;
+      unsigned int                         factorizations = 0;
+      unsigned int                         analyses       = 0;
     };
   } // namespace Solvers
 } // namespace pdfem
