@@ -43,6 +43,29 @@ namespace
     A.compress(VectorOperation::insert);
   }
 
+  /// Rows 0 .. n-1 in contiguous blocks, one per rank.
+  IndexSet
+  owned_rows(const unsigned int n)
+  {
+    const unsigned int rank = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    IndexSet owned(n);
+    owned.add_range(n * rank / n_ranks, n * (rank + 1) / n_ranks);
+    owned.compress();
+    return owned;
+  }
+
+  /// The direct solver with Amesos package @p package (mumps or klu).
+  pdfem::Solvers::Settings
+  direct_settings(const std::string &package)
+  {
+    pdfem::Solvers::Settings settings;
+    settings.type          = "direct";
+    settings.direct_solver = package;
+    return settings;
+  }
+
   /// |A x - b| / |b|.
   double
   relative_residual(const TrilinosWrappers::SparseMatrix &A,
@@ -59,21 +82,11 @@ namespace
   {
     for (const std::string package : {"mumps", "klu"})
       {
-        const unsigned int n = 40;
-        const unsigned int rank =
-          Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-        const unsigned int n_ranks =
-          Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-        IndexSet owned(n);
-        owned.add_range(n * rank / n_ranks, n * (rank + 1) / n_ranks);
-        owned.compress();
+        const IndexSet owned = owned_rows(40);
 
         // The matrices outlive the solver: its factorisation refers to them.
         TrilinosWrappers::SparseMatrix A, B;
-        pdfem::Solvers::Settings       settings;
-        settings.type          = "direct";
-        settings.direct_solver = package;
-        pdfem::Solvers::LinearSolver solver(settings);
+        pdfem::Solvers::LinearSolver   solver(direct_settings(package));
 
         make_tridiagonal(A, owned, 3.);
         TrilinosWrappers::MPI::Vector b(owned, MPI_COMM_WORLD), x(b), y(b);
@@ -124,14 +137,7 @@ namespace
   {
     for (const std::string package : {"mumps", "klu"})
       {
-        const unsigned int n = 10;
-        const unsigned int rank =
-          Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-        const unsigned int n_ranks =
-          Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-        IndexSet owned(n);
-        owned.add_range(n * rank / n_ranks, n * (rank + 1) / n_ranks);
-        owned.compress();
+        const IndexSet                 owned = owned_rows(10);
         TrilinosWrappers::SparseMatrix A;
         // A zero first row and column: exactly singular.
         make_tridiagonal(A, owned, 2.);
@@ -144,10 +150,7 @@ namespace
           else if (i == 1)
             A.set(1, 0, 0.);
         A.compress(VectorOperation::insert);
-        pdfem::Solvers::Settings settings;
-        settings.type          = "direct";
-        settings.direct_solver = package;
-        pdfem::Solvers::LinearSolver  solver(settings);
+        pdfem::Solvers::LinearSolver  solver(direct_settings(package));
         TrilinosWrappers::MPI::Vector b(owned, MPI_COMM_WORLD), x(b);
         for (const auto i : owned)
           b[i] = 1.;
