@@ -6,7 +6,8 @@
 #   a driver that can resume writes a checkpoint first (restart_test.sh restarts from one);
 # - parameters.prm in the output folder (every --set applied) repeats the run: the same nodes.csv;
 # - a run removes the outputs an earlier run left in its folder, and no other file;
-# - an output that cannot be written (the folder removed mid-run) ends the run with 'io error'.
+# - an output that cannot be written (the folder removed mid-run) ends the run with 'io error';
+# - solution.pvd's times are the steps' times, increasing; the .vtu mark cracked cells.
 # usage: run_contract_test.sh PDFEM CHECKER SCENES_DIR WORK
 set -u
 pdfem=$(readlink -f "$1") checker=$(readlink -f "$2") scenes=$(readlink -f "$3") work=$4
@@ -74,6 +75,33 @@ grep -Eq '^  load factor [0-9.e-]+: Newton iteration [0-9]+, \|r\|/\|f\| = ' "$w
   > "$work/progress_growth.log" 2>&1
 grep -Eq '^Step +2/100 .* left <= [0-9.]+ s$' "$work/progress_growth.log" \
   || fail "progress: a growth run's time left is not a bound"
+
+# solution.pvd lists each output at its step's time (the load factor here), strictly increasing:
+# growth steps at a held load 1e-9 (relative) after the one before; every .vtu has the cell array
+# 'cracked': the cells the pre-existing crack cuts, more once it has grown
+out="$work/pvd"
+"$pdfem" "$scenes/growth_mcts_center_crack.prm" --output "$out" --quiet --set "Output/Write vtu=true" \
+  --set "Output/Write every=1" > /dev/null 2>&1
+[ -f "$out/solution.pvd" ] || fail "pvd: no solution.pvd"
+python3 - "$out" << 'PY' || fail "pvd: times or cracked cells"
+import base64, re, struct, sys
+out = sys.argv[1]
+pvd = [float(t) for t in re.findall(r'timestep="([^"]+)"', open(out + "/solution.pvd").read())]
+rows = [l.split(",") for l in open(out + "/history.csv").read().split()[1:]]
+times = [float(r[1]) for r in rows]
+assert len(pvd) == len(times) + 1, (len(pvd), len(times))  # every step, then the final state
+assert all(b > a for a, b in zip(pvd, pvd[1:])), "not increasing"
+for t, h in zip(pvd, times + times[-1:]):
+    assert abs(t - h) <= 1e-7 * max(1., abs(h)), (t, h)
+assert len(set(times)) < len(times), "the scene has no growth steps at a held load"
+def cracked(vtu):
+    m = re.search(r'Name="cracked"[^>]*>\s*([^<\s]*)', open(vtu, encoding="latin-1").read())
+    raw = base64.b64decode(m.group(1))
+    return sum(struct.unpack("<%df" % ((len(raw) - 4) // 4), raw[4:]))
+first, last = cracked(out + "/solution_00000.0.vtu"), cracked(out + "/solution_%05d.0.vtu" % (len(pvd) - 1))
+assert 0 < first < last, (first, last)  # the pre-existing crack, then the grown one
+print("pvd: %d records from %g to %g, increasing; cracked cells %d, then %d" % (len(pvd), pvd[0], pvd[-1], first, last))
+PY
 
 # the output folder removed during a run: the next field output fails, the run ends 'io error'
 # (exit status 3, one message naming the file), no crash

@@ -558,6 +558,13 @@ namespace pdfem
       return impl->cell_pd;
     }
 
+    template <int dim>
+    std::vector<bool>
+    CoupledSystem<dim>::cracked_cells() const
+    {
+      return impl->cells_cut_by_broken_bonds();
+    }
+
 #define INSTANTIATE(dim) template class CoupledSystem<dim>;
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

@@ -13,6 +13,7 @@
 #include <deal.II/grid/reference_cell.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -212,6 +213,18 @@ namespace pdfem
           return {{0, 1, 2, 3, 4, 5}, 13};
         return {{0, 1, 2, 3, 4}, 14}; // pyramid
       }
+
+      /// The .pvd time of a record at @p time after one at @p previous:
+      /// @p time, or just after @p previous when it is not later (ParaView
+      /// would show records of equal times as parts of one state).
+      double
+      after_previous(const double previous, const double time)
+      {
+        if (time > previous)
+          return time;
+        const double scale = std::max(std::abs(previous), std::abs(time));
+        return previous + (scale > 0. ? 1e-9 * scale : 1e-12);
+      }
     } // namespace
 
     template <int dim>
@@ -229,7 +242,8 @@ namespace pdfem
       std::vector<unsigned int> point_node;
       std::vector<types::global_dof_index> scalar_local;
       Array region{"pd_region", 1, {}}, material{"material_id", 1, {}},
-        rank{"rank", 1, {}};
+        rank{"rank", 1, {}}, cracked{"cracked", 1, {}};
+      const std::vector<bool> cut = system.cracked_cells();
       for (const auto &cell : node_dofs.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -252,8 +266,10 @@ namespace pdfem
               system.cell_is_pd()[cell->active_cell_index()] ? 1.f : 0.f);
             material.values.push_back(cell->material_id());
             rank.values.push_back(cell->subdomain_id());
+            cracked.values.push_back(cut[cell->active_cell_index()] ? 1.f :
+                                                                      0.f);
           }
-      piece.cell_data = {region, material, rank};
+      piece.cell_data = {region, material, rank, cracked};
 
       const auto         names = Coupling::stress_component_names<dim>();
       const unsigned int n     = point_node.size();
@@ -315,7 +331,10 @@ namespace pdfem
         sources.push_back(base + "." + Utilities::int_to_string(r) + ".vtu");
       const std::string pvtu = base + ".pvtu";
       finish();
-      records.emplace_back(time, pvtu);
+      records.emplace_back(records.empty() ?
+                             time :
+                             after_previous(records.back().first, time),
+                           pvtu);
       std::string error;
       if (my_rank == 0)
         {

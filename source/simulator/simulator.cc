@@ -394,7 +394,7 @@ namespace pdfem
                      coupled->max_damage()});
     print_static_progress(record, s.n_broken_bonds);
     if (fields_due)
-      write_fields(record.step);
+      write_fields(record.time);
 
     Drivers::GrowthCheck check;
     check.grew                = assessment.broken_bonds > 0;
@@ -614,7 +614,7 @@ namespace pdfem
     try
       {
         s.write_fields(s.driver->dynamic() ? s.time_step_record.time :
-                                             double(s.n_steps));
+                                             s.step_record.time);
         for (const auto &p : s.postprocessors)
           p->finish();
       }

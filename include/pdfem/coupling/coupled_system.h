@@ -539,6 +539,11 @@ namespace pdfem
       mapping() const;
       const std::vector<bool> &
       cell_is_pd() const;
+      /// Per active cell: a crack runs through it (broken bonds split its
+      /// vertices into two or more groups; PD cells only, judged from the
+      /// locally owned families). The output's "cracked" cell array.
+      std::vector<bool>
+      cracked_cells() const;
 
     private:
       struct Impl;

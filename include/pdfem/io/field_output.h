@@ -25,11 +25,15 @@ namespace pdfem
     } // namespace internal
 
     /**
-     * Field output of a run: `solution-NNNNN.pvtu` (one `.vtu` piece per
+     * Field output of a run: `solution_NNNNN.pvtu` (one `.vtu` piece per
      * rank) with displacement, stress components, principal stresses, von
      * Mises stress, damage and node kind at the nodes, and PD region, material
-     * id and rank per cell; `solution.pvd` lists every output with its time
-     * and is rewritten after each.
+     * id, rank and "cracked" (a crack runs through it) per cell;
+     * `solution.pvd` lists every output with its time (the physical time of
+     * a dynamic run, the load factor of a static one) and is rewritten after
+     * each. ParaView takes records with equal times as parts of one state,
+     * so a record whose time does not exceed the one before it (growth
+     * steps at a held load) is listed 1e-9 (relative) after it.
      *
      * The files are written directly (uncompressed binary VTU, one point
      * per node, Float32), not through deal.II's DataOut: building DataOut's
@@ -47,6 +51,8 @@ namespace pdfem
       /// call finish() to learn it).
       ~FieldOutput();
 
+      /// Write the fields at @p time (the time or load factor of the
+      /// step; see the class description for equal times).
       void
       write(const Coupling::CoupledSystem<dim> &system,
             const Coupling::NodalResults<dim>  &results,
