@@ -25,7 +25,10 @@ jobs=${PDFEM_JOBS:-2}
 # ---- 1. Debian packages (only those that are missing)
 # libopenblas0-serial replaces Debian's reference BLAS under MUMPS (its dense kernels): a MUMPS
 # factorisation of plateCrack's coupled matrix took 2.4x less time with it (doc/benchmarks/fracture.md).
-packages=(cmake ninja-build g++ libdeal.ii-dev libmumps-dev gmsh openmpi-bin libgtest-dev ccache libopenblas0-serial)
+# libvtk9-dev, xvfb, xauth, fonts-dejavu-core: pdfem-plot and pdfem-render (PNG pictures, drawn
+# through a virtual X server; doc/tools.md).
+packages=(cmake ninja-build g++ libdeal.ii-dev libmumps-dev gmsh openmpi-bin libgtest-dev ccache libopenblas0-serial
+  libvtk9-dev xvfb xauth fonts-dejavu-core)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -55,6 +58,8 @@ export CCACHE_BASEDIR="$here"
 export CCACHE_SLOPPINESS="pch_defines,time_macros,include_file_mtime,include_file_ctime"
 if [ ! -f "$build/build.ninja" ]; then
   cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
+elif ! grep -q "pdfem-render" "$build/build.ninja"; then
+  cmake "$build" # configured before VTK was installed: look for it again
 fi
 cmake --build "$build" -j "$jobs"
 
@@ -69,6 +74,21 @@ case "$command" in
     echo "  summary.json  sizes, peak values, timings, exit state"
     echo "  history.csv   one row per load step"
     echo "  solution.pvd  open in ParaView (displacement, stress, damage, PD region)"
+    # A picture of the result (pdfem-render; doc/tools.md). Not having one does not fail the run.
+    picture="$out/picture.png"
+    render=("$build/bin/pdfem-render" "$out/solution.pvd" --field stress_xx -o "$picture")
+    if [ ! -x "$build/bin/pdfem-render" ]; then
+      echo "quickstart: no picture: pdfem-render was not built (VTK 9 not found: apt-get install libvtk9-dev)"
+    else
+      if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null; then
+        render=(xvfb-run -a "${render[@]}")
+      fi
+      if "${render[@]}" >"$out/picture.log" 2>&1; then
+        echo "  picture.png   stress_xx on the deformed shape (pdfem-render): $picture"
+      else
+        echo "quickstart: no picture: $(tail -n 1 "$out/picture.log")"
+      fi
+    fi
     ;;
   test)
     ctest --test-dir "$build" -j "$jobs" --output-on-failure

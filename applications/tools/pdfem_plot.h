@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Private to pdfem-plot: what its pieces share (the strings, the command line
-// and the rendering helpers of pdfem_plot_common.cc; the colours and camera of
-// pdfem_plot_view.cc) and its two commands.
+// Private to pdfem-plot and pdfem-render: what their pieces share (the strings,
+// the command line and the rendering helpers of pdfem_plot_common.cc; the
+// colours and camera of pdfem_plot_view.cc; the data side of field pictures in
+// pdfem_plot_grid.cc and their drawing in pdfem_plot_picture.cc) and
+// pdfem-plot's two commands.
 #ifndef PDFEM_APPLICATIONS_TOOLS_PDFEM_PLOT_H
 #define PDFEM_APPLICATIONS_TOOLS_PDFEM_PLOT_H
 
 #include <array>
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -15,9 +18,15 @@
 #include <vtkSmartPointer.h>
 
 class vtkCamera;
+class vtkDataArray;
+class vtkDataSet;
+class vtkFieldData;
 class vtkLookupTable;
+class vtkPointSet;
+class vtkPolyData;
 class vtkRenderWindow;
 class vtkTextProperty;
+class vtkUnstructuredGrid;
 
 namespace pdfem_plot
 {
@@ -32,6 +41,11 @@ namespace pdfem_plot
     using std::runtime_error::runtime_error;
   };
 
+  /// The program's name in messages: "pdfem-plot" unless main() changes it.
+  std::string &
+  program_name();
+
+  /// "<program>: warning: message" on stderr.
   void
   warn(const std::string &message);
 
@@ -164,9 +178,107 @@ namespace pdfem_plot
              double                margin);
 
   // Colour-bar labels: round values inside [lo, hi] that fit along a bar of
-  // length_px pixels.
+  // length_px pixels, with lo and hi themselves where they fit when with_ends.
   std::vector<double>
-  bar_labels(double lo, double hi, double length_px, double font_px);
+  bar_labels(double lo,
+             double hi,
+             double length_px,
+             double font_px,
+             bool   with_ends = true);
+
+  /// Decimals that tell round values `step` apart without an exponent (0 for
+  /// step >= 1, 1 for 0.1 <= step < 1, ...).
+  int
+  decimals_for_step(double step);
+
+  // ------------------------------------------------------------------------------------------------
+  // The data of field pictures (pdfem_plot_grid.cc)
+  // ------------------------------------------------------------------------------------------------
+
+  /// A .vtu or .pvtu file; RunError with VTK's first message if it cannot be
+  /// read.
+  vtkSmartPointer<vtkUnstructuredGrid>
+  read_grid(const std::string &file);
+
+  /// "name (3 components), name, ..." or "none".
+  std::string
+  describe_arrays(vtkFieldData *data);
+
+  /// The scalar a field picture is coloured by, added to the grid as its own
+  /// array.
+  struct FieldScalar
+  {
+    std::string name = "pdfem_plot_scalar"; ///< the added array
+    std::string label; ///< "stress_xx", "displacement magnitude", ...
+    bool        on_points = true;   ///< point array (else cell array)
+    int         component = -1;     ///< -1: the magnitude of a vector
+    double      lo = 0.0, hi = 0.0; ///< range of its finite values
+  };
+
+  /// The array `field` of grid (a point array, else a cell array; --component
+  /// of a) as a FieldScalar. UsageError for an unknown field (listing the
+  /// arrays of `file`) or component.
+  FieldScalar
+  add_field_scalar(vtkUnstructuredGrid *grid,
+                   const std::string   &field,
+                   const Arguments     &a,
+                   const std::string   &file);
+
+  /// Multiplies the scalar (and its range) by factor, e.g. 1e-6 for MPa.
+  void
+  scale_field_scalar(vtkUnstructuredGrid *grid, FieldScalar &s, double factor);
+
+  /// The point array "displacement" (2 or 3 components); UsageError naming
+  /// option and the arrays of `file` otherwise.
+  vtkDataArray *
+  displacement_array(vtkUnstructuredGrid *grid,
+                     const std::string   &option,
+                     const std::string   &file);
+
+  /// The deformed shape: the points moved by factor x displacement.
+  vtkSmartPointer<vtkPointSet>
+  warp_by_displacement(vtkUnstructuredGrid *grid,
+                       double               factor,
+                       const std::string   &option,
+                       const std::string   &file);
+
+  /// Do all points have the same z (a 2D model)?
+  bool
+  is_flat(vtkDataSet *data);
+
+  // ------------------------------------------------------------------------------------------------
+  // Drawing field pictures (pdfem_plot_picture.cc)
+  // ------------------------------------------------------------------------------------------------
+
+  /// What a field picture shows. The defaults and the fields up to `lines`
+  /// are pdfem-plot field's picture; `caption`, `outline` and `axes` are
+  /// pdfem-render's additions.
+  struct FieldPicture
+  {
+    vtkPointSet *model = nullptr;    ///< the shape to draw (maybe warped)
+    FieldScalar  scalar;             ///< the array of model to colour by
+    double       lo = 0.0, hi = 1.0; ///< colour range
+    std::string  colormap = "auto";  ///< auto, coolwarm or viridis
+    std::string  bar_title;          ///< above the colour bar
+    /// pdfem-plot: labels "%.3g", with the ends of the range; pdfem-render:
+    /// round values only, with as many decimals as their step needs.
+    bool        bar_end_labels = true;
+    std::string title;                      ///< empty: no title band
+    std::string note;                       ///< small, top left of the bar band
+    int         width = 1000, height = 800; ///< picture size [pixels]
+    bool        auto_height = false;        ///< 2D: as high as the model needs
+    bool        edges       = false;        ///< draw the cell edges
+    std::optional<std::array<double, 4>> zoom;       ///< x0 x1 y0 y1 (2D)
+    std::string                          lines_file; ///< legacy .vtk lines
+    std::vector<std::string> caption; ///< parts of the line(s) under the title
+    vtkPolyData *outline = nullptr;   ///< lines drawn on top with a halo
+    bool         axes    = false;     ///< 2D: framed x/y axes; 3D: a triad
+  };
+
+  /// Draws p and writes it to `out` (PNG); returns its width and height.
+  /// Needs an X display (RunError).
+  std::array<int, 2>
+  draw_field_picture(const FieldPicture &p, const std::string &out);
 
   // ------------------------------------------------------------------------------------------------
   // The commands

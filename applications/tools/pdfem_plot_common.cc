@@ -74,10 +74,17 @@ namespace pdfem_plot
     }
   } // namespace
 
+  std::string &
+  program_name()
+  {
+    static std::string name = "pdfem-plot";
+    return name;
+  }
+
   void
   warn(const std::string &message)
   {
-    std::cerr << "pdfem-plot: warning: " << message << '\n';
+    std::cerr << program_name() << ": warning: " << message << '\n';
   }
 
   std::string
@@ -289,13 +296,14 @@ namespace pdfem_plot
     if (display == nullptr || *display == '\0')
       throw RunError(
         "no X display (DISPLAY is not set); VTK renders through X, so run the tool under a "
-        "virtual X server: xvfb-run -a pdfem-plot ...");
+        "virtual X server: xvfb-run -a " +
+        program_name() + " ...");
 #ifdef PDFEM_PLOT_WITH_X11
     Display *connection = XOpenDisplay(nullptr);
     if (connection == nullptr)
-      throw RunError(
-        "cannot open the X display " + in_quotes(display) +
-        "; run the tool under a virtual X server: xvfb-run -a pdfem-plot ...");
+      throw RunError("cannot open the X display " + in_quotes(display) +
+                     "; run the tool under a virtual X server: xvfb-run -a " +
+                     program_name() + " ...");
     window->SetDisplayId(connection);
 #else
     (void)window;

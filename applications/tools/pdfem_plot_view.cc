@@ -171,9 +171,13 @@ namespace pdfem_plot
 
   // Colour-bar labels: round values (see nice_ticks) inside [lo, hi], as many
   // as fit along a bar of length_px pixels, plus lo and hi themselves where
-  // they fit.
+  // they fit (with_ends).
   std::vector<double>
-  bar_labels(double lo, double hi, double length_px, double font_px)
+  bar_labels(double lo,
+             double hi,
+             double length_px,
+             double font_px,
+             bool   with_ends)
   {
     auto text_px = [&](double v) {
       char text[64];
@@ -197,6 +201,12 @@ namespace pdfem_plot
           values.push_back(k == 0.0 ? 0.0 : k * t.step);
         if (values.empty() || !fits(values))
           continue;
+        if (!with_ends)
+          {
+            if (values.size() >= 2)
+              return values;
+            continue;
+          }
         if (values.front() - lo > eps)
           {
             values.insert(values.begin(), lo);
@@ -213,5 +223,15 @@ namespace pdfem_plot
           return values;
       }
     return {lo, hi};
+  }
+
+  int
+  decimals_for_step(double step)
+  {
+    if (!(step > 0.0) || !std::isfinite(step))
+      return 0;
+    return std::clamp(static_cast<int>(-std::floor(std::log10(step) + 1e-9)),
+                      0,
+                      12);
   }
 } // namespace pdfem_plot
