@@ -57,13 +57,15 @@ chart: line chart of columns of comma-separated files with a header row (e.g. hi
   --x COLUMN            column for the horizontal axis
   --y COL1[,COL2...]    columns to plot against it, one series each
   --csv2 FILE2.csv      a second file to overlay (e.g. a reference solution); its series are
-                        drawn dashed (with crosses under --points) in the colours of the first file's
+                        drawn dashed (with larger crosses, on top, under --points), each series
+                        in its own colour
   --y2 COLS             columns of FILE2.csv (default: the --y columns)
   --x2 COLUMN           x column of FILE2.csv (default: the --x column)
   --label L1,L2,...     legend entries, one per series, first file's series first
                         (default: column names, with the file names when --csv2 is given)
   --logx, --logy        logarithmic axes (values <= 0 are left out, with a warning)
-  --xlabel T, --ylabel T  axis titles (default: the x column; the y column if there is one)
+  --xlabel T, --ylabel T  axis titles (default: the x column; the y column if there is one;
+                        with the unit of pdfem's history.csv columns, e.g. "reaction_top_y [N]")
   --title T             chart title
   --legend POS          auto (default: the corner that hides the fewest data), top-right,
                         top-left, bottom-right, bottom-left or none

@@ -123,6 +123,47 @@ namespace pdfem_plot
       return std::filesystem::path(file).stem().string();
     }
 
+    // The unit of a column of pdfem's history.csv ("" for counts, the
+    // pseudo-time of static runs and names it does not know).
+    std::string
+    history_unit(const std::string &name)
+    {
+      auto starts  = [&](const char *p) { return name.rfind(p, 0) == 0; };
+      auto indexed = [&](const char *p) { // p followed by a tip number
+        const std::size_t n = std::string(p).size();
+        return starts(p) && name.size() > n &&
+               name.find_first_not_of("0123456789", n) == std::string::npos;
+      };
+      if (name == "load_factor" || name == "residual" || name == "max_damage")
+        return "-";
+      if (starts("reaction_"))
+        return "N";
+      if (starts("u_") || (starts("tip") && (name.size() > 2) &&
+                           (name.compare(name.size() - 2, 2, "_x") == 0 ||
+                            name.compare(name.size() - 2, 2, "_y") == 0 ||
+                            name.compare(name.size() - 2, 2, "_z") == 0)))
+        return "m";
+      if (indexed("K_I") || indexed("K_II") || indexed("K_III") ||
+          indexed("K_eq"))
+        return "Pa\u221am";
+      if (indexed("J"))
+        return "J/m\u00b2";
+      if (name == "kinetic_energy" || name == "strain_energy" ||
+          name == "external_work" || name == "dissipated_energy")
+        return "J";
+      if (name == "wall_seconds" || name == "time_step")
+        return "s";
+      return "";
+    }
+
+    // "name [unit]", or the name alone when its unit is unknown.
+    std::string
+    with_history_unit(const std::string &name)
+    {
+      const std::string unit = history_unit(name);
+      return unit.empty() ? name : name + " [" + unit + "]";
+    }
+
     struct Series
     {
       std::string         label;
@@ -426,7 +467,7 @@ namespace pdfem_plot
       {
         series.push_back(make_series(csv2, xcol2, ycols2[i], logx, logy));
         series.back().from_second_file = true;
-        series.back().colour           = static_cast<int>(i);
+        series.back().colour           = static_cast<int>(ycols1.size() + i);
       }
     for (std::size_t i = 0; i < series.size(); ++i)
       series[i].label = labels[i];
@@ -496,9 +537,14 @@ namespace pdfem_plot
           {
             if (points || s.x.size() == 1)
               {
+                // The second file's crosses are larger and drawn later, so
+                // that they show on top of the first file's dots.
                 pp->SetMarkerStyle(s.from_second_file ? vtkPlotPoints::CROSS :
                                                         vtkPlotPoints::CIRCLE);
-                pp->SetMarkerSize(std::max(6.0f, font * 0.5f));
+                pp->SetMarkerSize(std::max(6.0f, font * 0.5f) *
+                                  (s.from_second_file ? 1.8f : 1.0f));
+                if (s.from_second_file)
+                  plot->SetWidth(3.0f);
               }
             else
               pp->SetMarkerStyle(vtkPlotPoints::NONE);
@@ -515,6 +561,8 @@ namespace pdfem_plot
       axis->GetGridPen()->SetColor(220, 220, 220, 255);
       axis->SetLogScale(log);
     };
+    // Default axis titles: the column with its unit where pdfem's history.csv
+    // has a known one; for different y columns of one unit, the unit alone.
     std::string ylabel;
     {
       std::vector<std::string> all = y1names;
@@ -522,10 +570,16 @@ namespace pdfem_plot
       if (std::all_of(all.begin(), all.end(), [&](const std::string &n) {
             return n == all.front();
           }))
-        ylabel = all.front();
+        ylabel = with_history_unit(all.front());
+      else if (const std::string unit = history_unit(all.front());
+               !unit.empty() &&
+               std::all_of(all.begin(), all.end(), [&](const std::string &n) {
+                 return history_unit(n) == unit;
+               }))
+        ylabel = "[" + unit + "]";
     }
     style_axis(chart->GetAxis(vtkAxis::BOTTOM),
-               a.value_or("--xlabel", xname),
+               a.value_or("--xlabel", with_history_unit(xname)),
                logx);
     style_axis(chart->GetAxis(vtkAxis::LEFT),
                a.value_or("--ylabel", ylabel),

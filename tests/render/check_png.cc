@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // check_png: does a PNG look like a picture? Used by the render.* tests.
 //
-//   check_png FILE.png WIDTH HEIGHT MIN_COLOURS
+//   check_png FILE.png WIDTH HEIGHT MIN_COLOURS [P%] [R,G,B ...]
 //
 // Checks that FILE.png can be read, is WIDTH x HEIGHT pixels (0 0: any size),
-// has at least MIN_COLOURS distinct colours and that no single colour (the
-// background) covers more than 90 % of it. Prints one line; exit status 0 when
-// every check holds, 1 otherwise.
+// has at least MIN_COLOURS distinct colours, that no single colour (the
+// background) covers more than P % of it (default 90; charts are mostly
+// white) and that each colour R,G,B given (e.g. a chart's series colours)
+// covers at least 20 pixels. Prints what it found; exit status 0 when every
+// check holds, 1 otherwise.
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <map>
@@ -19,9 +23,10 @@
 int
 main(int argc, char **argv)
 {
-  if (argc != 5)
+  if (argc < 5)
     {
-      std::cerr << "usage: check_png FILE.png WIDTH HEIGHT MIN_COLOURS\n";
+      std::cerr
+        << "usage: check_png FILE.png WIDTH HEIGHT MIN_COLOURS [P%] [R,G,B ...]\n";
       return 2;
     }
   const std::string file        = argv[1];
@@ -74,10 +79,39 @@ main(int argc, char **argv)
                 << " colours (a blank picture?)\n";
       ok = false;
     }
-  if (background > 0.9)
+  int first_colour = 5;
+  int max_percent  = 90;
+  if (argc > 5 && std::string(argv[5]).back() == '%')
     {
-      std::cout << "check_png: FAILED: one colour covers more than 90 %\n";
+      max_percent  = std::atoi(argv[5]);
+      first_colour = 6;
+    }
+  if (background > max_percent / 100.0)
+    {
+      std::cout << "check_png: FAILED: one colour covers more than "
+                << max_percent << " %\n";
       ok = false;
+    }
+  for (int i = first_colour; i < argc; ++i)
+    {
+      int r = -1, g = -1, b = -1;
+      if (std::sscanf(argv[i], "%d,%d,%d", &r, &g, &b) != 3)
+        {
+          std::cerr << "check_png: a colour is R,G,B, got '" << argv[i]
+                    << "'\n";
+          return 2;
+        }
+      const auto it =
+        colours.find((static_cast<unsigned long>(r) * 256 + g) * 256 + b);
+      const long n = it == colours.end() ? 0 : it->second;
+      std::cout << "check_png: colour " << argv[i] << " on " << n
+                << " pixels\n";
+      if (n < 20)
+        {
+          std::cout << "check_png: FAILED: expected at least 20 pixels of "
+                    << argv[i] << "\n";
+          ok = false;
+        }
     }
   return ok ? 0 : 1;
 }

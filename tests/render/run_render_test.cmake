@@ -1,5 +1,6 @@
 # One render.* test (tests/render/CMakeLists.txt):
 #   cmake -DRENDER=pdfem-render -DWORK=dir -DARGS="a##b##..." [options] -P run_render_test.cmake
+# (RENDER is the program to run: pdfem-render, or pdfem-plot for render.chart_overlay)
 #
 #   -DPDFEM=pdfem -DSCENE=x.prm   first run pdfem on the scene into WORK (the fixture's setup;
 #                                 nothing else is done then)
@@ -10,7 +11,7 @@
 #   -DEXPECT_RC=0|2               exit status of pdfem-render (default 0)
 #   -DSTDOUT="re1##re2"           regular expressions stdout must match (each on its own)
 #   -DSTDERR="re"                 for EXPECT_RC=2: stderr must be one line matching re
-#   -DCHECKER=check_png -DPNG=file -DPNG_SIZE="W H" -DMIN_COLOURS=n
+#   -DCHECKER=check_png -DPNG=file -DPNG_SIZE="W H" -DMIN_COLOURS="n [P%] [R,G,B ...]"
 #                                 then check the picture (see check_png.cc)
 #   -DXVFB_RUN=xvfb-run           used when DISPLAY is not set (pdfem-render draws through X)
 # "##" separates list items, because ';' would split the arguments of add_test.
@@ -71,7 +72,8 @@ execute_process(COMMAND ${command} WORKING_DIRECTORY "${WORK}"
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}${err}")
 if(NOT rc EQUAL EXPECT_RC)
-  message(FATAL_ERROR "pdfem-render exited with ${rc}, expected ${EXPECT_RC}")
+  get_filename_component(program "${RENDER}" NAME)
+  message(FATAL_ERROR "${program} exited with ${rc}, expected ${EXPECT_RC}")
 endif()
 
 if(STDOUT)
@@ -94,7 +96,8 @@ endif()
 
 if(PNG)
   separate_arguments(size UNIX_COMMAND "${PNG_SIZE}")
-  execute_process(COMMAND "${CHECKER}" "${PNG}" ${size} ${MIN_COLOURS}
+  separate_arguments(colours UNIX_COMMAND "${MIN_COLOURS}")
+  execute_process(COMMAND "${CHECKER}" "${PNG}" ${size} ${colours}
                   WORKING_DIRECTORY "${WORK}" RESULT_VARIABLE rc OUTPUT_VARIABLE out)
   message("${out}")
   if(NOT rc EQUAL 0)
