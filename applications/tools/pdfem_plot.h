@@ -30,12 +30,12 @@ class vtkUnstructuredGrid;
 
 namespace pdfem_plot
 {
-  // A bad command line: exit status 2.
+  /// A bad command line: exit status 2.
   struct UsageError : std::runtime_error
   {
     using std::runtime_error::runtime_error;
   };
-  // Anything else that goes wrong: exit status 1.
+  /// Anything else that goes wrong: exit status 1.
   struct RunError : std::runtime_error
   {
     using std::runtime_error::runtime_error;
@@ -49,25 +49,30 @@ namespace pdfem_plot
   void
   warn(const std::string &message);
 
+  /// s in single quotes, for messages.
   std::string
   in_quotes(const std::string &s);
 
+  /// The items with separator between them.
   std::string
   join(const std::vector<std::string> &items,
        const std::string              &separator = ", ");
 
+  /// The parts of s between separators (an empty last part after a trailing
+  /// separator).
   std::vector<std::string>
   split(const std::string &s, char separator);
 
+  /// s without leading and trailing white space.
   std::string
   trim(const std::string &s);
 
-  // Does s end in suffix (given in lower case), in any case?
+  /// Does s end in suffix (given in lower case), in any case?
   bool
   ends_with(const std::string &s, const std::string &suffix);
 
-  // Whole-string number parsing in the formats strtod (and so std::stod)
-  // accepts.
+  /// Whole-string number parsing in the formats strtod (and so std::stod)
+  /// accepts.
   bool
   parse_number(const std::string &text, double &value);
 
@@ -75,29 +80,35 @@ namespace pdfem_plot
   // Command line
   // ------------------------------------------------------------------------------------------------
 
+  /// An option a command accepts.
   struct OptionSpec
   {
-    std::string name;    // "--range"
-    std::string metavar; // "MIN MAX"; empty for flags
-    int         n_values;
+    std::string name;     ///< "--range"
+    std::string metavar;  ///< "MIN MAX"; empty for flags
+    int         n_values; ///< how many values follow the option
   };
 
+  /// A parsed command line.
   struct Arguments
   {
-    std::string                                     command;
-    std::vector<std::string>                        positional;
-    std::map<std::string, std::vector<std::string>> options;
+    std::string              command;    ///< the command, for messages
+    std::vector<std::string> positional; ///< arguments that are no options
+    std::map<std::string, std::vector<std::string>>
+      options; ///< each option given, with its values
 
+    /// Was option `name` given?
     bool
     has(const std::string &name) const
     {
       return options.count(name) != 0;
     }
+    /// Value i of option `name` (which must have been given).
     const std::string &
     value(const std::string &name, std::size_t i = 0) const
     {
       return options.at(name).at(i);
     }
+    /// The (first) value of option `name`, or fallback.
     std::string
     value_or(const std::string &name, const std::string &fallback) const
     {
@@ -105,29 +116,29 @@ namespace pdfem_plot
     }
   };
 
-  // The options of args among specs and the rest (positional); UsageError
-  // for an unknown or repeated option or missing values.
+  /// The options of args among specs and the rest (positional); UsageError
+  /// for an unknown or repeated option or missing values.
   Arguments
   parse_arguments(const std::string              &command,
                   const std::vector<std::string> &args,
                   const std::vector<OptionSpec>  &specs);
 
-  // Value i of option name as a finite number (what: for the message).
+  /// Value i of option name as a finite number (what: for the message).
   double
   number_option(const Arguments   &a,
                 const std::string &name,
                 std::size_t        i,
                 const std::string &what);
 
-  // --size W H, or the defaults.
+  /// --size W H, or the defaults.
   std::array<int, 2>
   size_option(const Arguments &a, int default_w, int default_h);
 
-  // The one positional argument, a readable file (kinds: for the message).
+  /// The one positional argument, a readable file (kinds: for the message).
   std::string
   input_file(const Arguments &a, const std::string &kinds);
 
-  // --out, a .png in an existing directory.
+  /// --out, a .png in an existing directory.
   std::string
   output_file(const Arguments &a);
 
@@ -135,25 +146,27 @@ namespace pdfem_plot
   // Rendering helpers
   // ------------------------------------------------------------------------------------------------
 
+  /// The window's picture as a PNG file (RunError if it cannot be written).
   void
   write_png(vtkRenderWindow *window, const std::string &file);
 
-  // Black text of font_size in DejaVu Sans when it is installed, else Arial.
+  /// Black text of font_size in DejaVu Sans when it is installed, else Arial.
   void
   style_text(vtkTextProperty *p, int font_size, bool bold = false);
 
-  // VTK renders through X and crashes when it cannot open the display: check
-  // first (RunError).
+  /// VTK renders through X and crashes when it cannot open the display: check
+  /// first (RunError).
   void
   require_display(vtkRenderWindow *window);
 
-  // Axis ticks at round values (1, 2 or 5 times a power of ten), at most
-  // max_intervals intervals, covering [lo, hi].
+  /// Round axis ticks: lo, lo + step, ..., hi.
   struct Ticks
   {
     double lo, hi, step;
   };
 
+  /// Axis ticks at round values (1, 2 or 5 times a power of ten), at most
+  /// max_intervals intervals, covering [lo, hi].
   Ticks
   nice_ticks(double lo, double hi, int max_intervals);
 
@@ -161,14 +174,14 @@ namespace pdfem_plot
   // Field pictures (pdfem_plot_view.cc)
   // ------------------------------------------------------------------------------------------------
 
-  // A 256-colour table on [lo, hi] for the colour map name (coolwarm or
-  // viridis).
+  /// A 256-colour table on [lo, hi] for the colour map name (coolwarm or
+  /// viridis).
   vtkSmartPointer<vtkLookupTable>
   make_lookup_table(const std::string &name, double lo, double hi);
 
-  // Parallel-projection camera looking from direction `from` (towards the
-  // centre of `bounds`), with the box bounds[0..5] filling the viewport of
-  // aspect ratio `aspect` (width/height) up to `margin`.
+  /// Parallel-projection camera looking from direction `from` (towards the
+  /// centre of `bounds`), with the box bounds[0..5] filling the viewport of
+  /// aspect ratio `aspect` (width/height) up to `margin`.
   void
   fit_camera(vtkCamera            *camera,
              const double          bounds[6],
@@ -177,8 +190,8 @@ namespace pdfem_plot
              double                aspect,
              double                margin);
 
-  // Colour-bar labels: round values inside [lo, hi] that fit along a bar of
-  // length_px pixels, with lo and hi themselves where they fit when with_ends.
+  /// Colour-bar labels: round values inside [lo, hi] that fit along a bar of
+  /// length_px pixels, with lo and hi themselves where they fit when with_ends.
   std::vector<double>
   bar_labels(double lo,
              double hi,
@@ -284,11 +297,11 @@ namespace pdfem_plot
   // The commands
   // ------------------------------------------------------------------------------------------------
 
-  // pdfem-plot field ... (pdfem_plot_field.cc); returns the exit status.
+  /// pdfem-plot field ... (pdfem_plot_field.cc); returns the exit status.
   int
   run_field(const std::vector<std::string> &args);
 
-  // pdfem-plot chart ... (pdfem_plot_chart.cc); returns the exit status.
+  /// pdfem-plot chart ... (pdfem_plot_chart.cc); returns the exit status.
   int
   run_chart(const std::vector<std::string> &args);
 } // namespace pdfem_plot

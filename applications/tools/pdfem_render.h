@@ -87,7 +87,8 @@ namespace pdfem_render
   pd_outline(vtkPointSet *model, bool is_2d, long &n_pd_cells);
 
   /// v without an exponent: integers as such, others with up to 4
-  /// significant digits ("2500", "2.5", "0.0125").
+  /// significant digits ("2500", "2.5", "0.0125"); %g beyond 1e15 or below
+  /// 1e-9.
   std::string
   plain_number(double v);
 } // namespace pdfem_render

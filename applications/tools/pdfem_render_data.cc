@@ -288,7 +288,10 @@ namespace pdfem_render
   plain_number(double v)
   {
     char text[64];
-    if (v == std::floor(v) && std::abs(v) < 1e15)
+    if (!std::isfinite(v) || v == 0.0 || std::abs(v) >= 1e15 ||
+        std::abs(v) < 1e-9)
+      std::snprintf(text, sizeof(text), "%g", v);
+    else if (v == std::floor(v))
       std::snprintf(text, sizeof(text), "%.0f", v);
     else
       {
