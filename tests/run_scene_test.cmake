@@ -3,6 +3,7 @@
 # Directives read from the scene's comments:
 #   # CHECK: <json key> = <value> rel|abs <tol>   a value in summary.json
 #   # CHECK: <json key> > <value>                  (or <) a bound on a value in summary.json
+#   # CHECK-STRING: <json key> = <text>            a string in summary.json, equal to <text>
 #   # CHECK-HISTORY: <command> <args>             pdfem_check <command> history.csv <args>
 #                                                  (column ..., wave-speed ..., nondecreasing COLUMN;
 #                                                  see pdfem_check.cc)
@@ -27,10 +28,11 @@ set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
 set(ENV{OMPI_ALLOW_RUN_AS_ROOT_CONFIRM} 1)
 set(ENV{OMPI_MCA_rmaps_base_oversubscribe} 1)
 
-file(STRINGS "${PRM}" directives REGEX "^# (CHECK|CHECK-HISTORY|CHECK-REFERENCE|CHECK-REFERENCE-FIELDS|REFERENCE|EXIT-STATE|EXPECT-ERROR|MPI|THREADS|REQUIRES):")
+file(STRINGS "${PRM}" directives REGEX "^# (CHECK|CHECK-STRING|CHECK-HISTORY|CHECK-REFERENCE|CHECK-REFERENCE-FIELDS|REFERENCE|EXIT-STATE|EXPECT-ERROR|MPI|THREADS|REQUIRES):")
 get_filename_component(scene_dir "${PRM}" DIRECTORY)
 set(checks "")
 set(history_checks "")
+set(string_checks "")
 set(exit_state "completed")
 set(expect_error "")
 set(n_ranks 0)
@@ -45,6 +47,9 @@ foreach(line IN LISTS directives)
     string(STRIP "${CMAKE_MATCH_2}" args)
     string(REGEX REPLACE " +" "|" args "${args}")
     list(APPEND history_checks "${command}|${args}")
+  elseif(line MATCHES "^# CHECK-STRING: *([^ ]+) *= *(.+)$")
+    string(STRIP "${CMAKE_MATCH_2}" text)
+    list(APPEND string_checks "${CMAKE_MATCH_1}|${text}")
   elseif(line MATCHES "^# CHECK: *([^ ]+) *= *([^ ]+) +(rel|abs) +([^ ]+)")
     list(APPEND checks "${CMAKE_MATCH_1}|${CMAKE_MATCH_2}|${CMAKE_MATCH_3}|${CMAKE_MATCH_4}")
   elseif(line MATCHES "^# CHECK: *([^ ]+) *([<>]) *([^ ]+) *$")
@@ -128,6 +133,17 @@ function(run_and_check tag launcher)
       execute_process(COMMAND "${CHECKER}" value "${WORK}/${tag}/summary.json" ${key} ${value} ${kind} ${tol}
         RESULT_VARIABLE crc)
     endif()
+    if(crc)
+      set(failed 1)
+    endif()
+  endforeach()
+  foreach(check IN LISTS string_checks)
+    string(FIND "${check}" "|" bar)
+    string(SUBSTRING "${check}" 0 ${bar} key)
+    math(EXPR bar "${bar} + 1")
+    string(SUBSTRING "${check}" ${bar} -1 text)
+    execute_process(COMMAND "${CHECKER}" string "${WORK}/${tag}/summary.json" ${key} "${text}"
+      RESULT_VARIABLE crc)
     if(crc)
       set(failed 1)
     endif()

@@ -272,7 +272,8 @@ namespace pdfem
     CoupledSystem<dim>::Impl::assemble_tangent()
     {
       solver.matrix_changed();
-      matrix = 0.;
+      tangent_outdated = false;
+      matrix           = 0.;
       // FE cells: the owned rows of the unconstrained FE matrix (assembled
       // once), with prescribed rows and columns dropped. Rows are read as
       // Epetra views: deal.II's Trilinos row iterator extracts the row again
@@ -506,7 +507,8 @@ namespace pdfem
       s.compute_internal_force(u);
       s.assemble_external(t);
       // Assembled on demand: the last residual of a step only checks.
-      s.tangent_stale = assemble_tangent && !s.matrix_free;
+      s.tangent_stale = assemble_tangent && !s.matrix_free &&
+                        (!s.model->linear() || s.tangent_outdated);
       if (!s.model->linear())
         s.u_tangent = s.u_ghosted; // the state check_stability() tests
 
@@ -548,36 +550,6 @@ namespace pdfem
     CoupledSystem<dim>::solve_linear(Vector &du, const Vector &r)
     {
       return solve_linear_within(du, r, 0.);
-    }
-
-    template <int dim>
-    unsigned int
-    CoupledSystem<dim>::solve_linear_within(Vector       &du,
-                                            const Vector &r,
-                                            const double  allowed_residual)
-    {
-      Impl &s = *impl;
-      du.reinit(s.owned, s.comm);
-      if (s.matrix_free)
-        {
-          if (s.auxiliary_stale)
-            s.assemble_auxiliary();
-          if (s.block_inverse.empty())
-            s.make_block_jacobi();
-          return s.solver.solve(
-            [&s](Vector &y, const Vector &x) { s.vmult(y, x); },
-            du,
-            r,
-            s.auxiliary,
-            [&s](Vector &w, const Vector &t) { s.apply_block_jacobi(w, t); },
-            allowed_residual);
-        }
-      if (s.tangent_stale)
-        {
-          s.assemble_tangent();
-          s.tangent_stale = false;
-        }
-      return s.solver.solve(s.matrix, du, r, allowed_residual);
     }
 
     template <int dim>
@@ -662,8 +634,6 @@ namespace pdfem
   template Drivers::StabilityReport CoupledSystem<dim>::check_stability();            \
   template unsigned int             CoupledSystem<dim>::solve_linear(Vector &,        \
                                                          const Vector &); \
-  template unsigned int             CoupledSystem<dim>::solve_linear_within(          \
-    Vector &, const Vector &, double);                                    \
   template void CoupledSystem<dim>::stiffness_row_bounds(Vector &);
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

@@ -34,7 +34,10 @@ namespace pdfem
     {
       update_held();
       block_inverse.clear(); // rebuilt by the next solve
-      auxiliary_stale = matrix_free;
+      auxiliary_stale  = matrix_free;
+      tangent_outdated = true;
+      if (choice)
+        choice->matrix_changed();
     }
 
     template <int dim>

@@ -7,6 +7,7 @@
 #include <pdfem/pd/families.h>
 #include <pdfem/pd_models/interface.h>
 #include <pdfem/solvers/linear_solver.h>
+#include <pdfem/solvers/solver_choice.h>
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/index_set.h>
@@ -60,6 +61,31 @@ namespace pdfem
       make_families();
       void
       make_sparsity();
+      /// Add the entries of the locally owned FE cells (@p all_cells: every
+      /// cell) and every owned diagonal to @p sp.
+      void
+      add_cell_entries(dealii::TrilinosWrappers::SparsityPattern &sp,
+                       bool all_cells) const;
+      /// The pattern of the "amg fe" auxiliary matrix (every cell).
+      void
+      make_auxiliary_pattern();
+      /// The pattern of the assembled coupled tangent.
+      void
+      make_assembled_pattern();
+      // ----- Linear solver Type = auto (coupled_system_solver_choice.cc)
+      /// Create the choice (once), with the estimate of the direct
+      /// factors' memory.
+      void
+      set_up_choice();
+      /// Solve on the path the choice says (or the one configured).
+      unsigned int
+      solve_on_path(dealii::TrilinosWrappers::MPI::Vector       &du,
+                    const dealii::TrilinosWrappers::MPI::Vector &r,
+                    double allowed_residual);
+      /// Go over to @p path: build what it needs, drop what it no longer
+      /// does.
+      void
+      switch_path(Solvers::SolvePath path);
       void
       make_boundary_conditions();
       /// The nodes of @p nodes, and the PD nodes within @p layer of any of
@@ -407,8 +433,15 @@ namespace pdfem
       /// The displacement the tangent is assembled at (nonlinear models).
       dealii::TrilinosWrappers::MPI::Vector u_tangent;
       Solvers::LinearSolver                 solver;
-      double                                force_scale = 0.;
+      /// Linear solver Type = auto: the measured choice of path.
+      std::unique_ptr<Solvers::SolverChoice> choice;
+      double                                 force_scale = 0.;
       bool tangent_stale = false; // residual() asked, solve_linear builds
+      /// A linear model's tangent changes only with the bonds, the held
+      /// DoFs and the pattern: the assembled one is kept (and its direct
+      /// factorisation) until one of them changes. plate_with_hole with 10
+      /// load steps: 1 factorisation instead of 10.
+      bool                                tangent_outdated = true;
       std::vector<dealii::Tensor<1, dim>> last_reactions;
       std::size_t                         n_matrix_entries = 0;
       /// Mass, effective-matrix factorisation (shared_ptr: the type is

@@ -176,7 +176,8 @@ namespace pdfem
     void
     CoupledSystem<dim>::Impl::make_sparsity()
     {
-      matrix_free = settings.linear_solver.matrix_free();
+      matrix_free = choice ? choice->path() == Solvers::SolvePath::matrix_free :
+                             settings.linear_solver.matrix_free();
       // CG needs a symmetric operator: FE cells are, a PD model says.
       if (settings.linear_solver.conjugate_gradients() && has_pd_cells() &&
           !model->symmetric())
@@ -194,74 +195,18 @@ namespace pdfem
                          "which a nonlinear PD model needs",
                          "amg, ilu, or Linear solver/Type = direct");
 
-      // Cell patterns: FE cells only (f_int, tangent), or every cell ("amg
-      // fe"); every owned row has its diagonal (held DoFs).
-      std::vector<types::global_dof_index> local;
-      auto add_cells = [&](TrilinosWrappers::SparsityPattern &sp,
-                           const bool                         all_cells) {
-        for (const auto &cell : dofs.active_cell_iterators())
-          if (cell->is_locally_owned() &&
-              (all_cells || !cell_pd[cell->active_cell_index()]))
-            {
-              local.resize(cell->get_fe().n_dofs_per_cell());
-              cell->get_dof_indices(local);
-              std::sort(local.begin(), local.end());
-              for (const auto row : local)
-                sp.add_entries(row, local.begin(), local.end(), true);
-            }
-        for (const auto i : owned)
-          sp.add(i, i);
-      };
-
       {
         TrilinosWrappers::SparsityPattern sp(owned, owned, relevant, comm);
-        add_cells(sp, false);
+        add_cell_entries(sp, false);
         sp.compress();
         fe_matrix.reinit(sp);
       }
+      auxiliary.clear();
+      n_matrix_entries = 0;
       if (matrix_free)
-        {
-          TrilinosWrappers::SparsityPattern sp(owned, owned, relevant, comm);
-          add_cells(sp, true);
-          sp.compress();
-          auxiliary.reinit(sp);
-          n_matrix_entries = 0;
-        }
+        make_auxiliary_pattern();
       else
-        {
-          // The coupled tangent: FE cells plus each PD row with its family
-          // (family-element models: every node of a family with all of
-          // them, like a cell).
-          TrilinosWrappers::SparsityPattern sp(owned, owned, relevant, comm);
-          add_cells(sp, false);
-          std::vector<types::global_dof_index> cols;
-          for (std::size_t o = 0; o < families.owners.size(); ++o)
-            {
-              const unsigned int k = families.owners[o];
-              cols.clear();
-              for (unsigned int c = 0; c < dim; ++c)
-                cols.push_back(node_dof[k][c]);
-              for (std::size_t j = families.offsets[o];
-                   j < families.offsets[o + 1];
-                   ++j)
-                for (unsigned int c = 0; c < dim; ++c)
-                  cols.push_back(node_dof[families.members[j]][c]);
-              std::sort(cols.begin(), cols.end());
-              if (layout.family_elements)
-                for (const auto row : cols)
-                  sp.add_entries(row, cols.begin(), cols.end(), true);
-              else
-                for (unsigned int c = 0; c < dim; ++c)
-                  sp.add_entries(node_dof[k][c],
-                                 cols.begin(),
-                                 cols.end(),
-                                 true);
-            }
-          sp.compress();
-          solver.matrix_rebuilt();
-          matrix.reinit(sp);
-          n_matrix_entries = matrix.n_nonzero_elements();
-        }
+        make_assembled_pattern();
 
       f_int.reinit(owned, relevant, comm, true);
       f_ext.reinit(owned, relevant, comm, true);
@@ -288,6 +233,75 @@ namespace pdfem
               modes[c][i] = true;
         }
       solver.set_constant_modes(modes);
+      set_up_choice();
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::add_cell_entries(
+      TrilinosWrappers::SparsityPattern &sp,
+      const bool                         all_cells) const
+    {
+      // Cell patterns: FE cells only (f_int, tangent), or every cell ("amg
+      // fe"); every owned row has its diagonal (held DoFs).
+      std::vector<types::global_dof_index> local;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned() &&
+            (all_cells || !cell_pd[cell->active_cell_index()]))
+          {
+            local.resize(cell->get_fe().n_dofs_per_cell());
+            cell->get_dof_indices(local);
+            std::sort(local.begin(), local.end());
+            for (const auto row : local)
+              sp.add_entries(row, local.begin(), local.end(), true);
+          }
+      for (const auto i : owned)
+        sp.add(i, i);
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::make_auxiliary_pattern()
+    {
+      TrilinosWrappers::SparsityPattern sp(owned, owned, relevant, comm);
+      add_cell_entries(sp, true);
+      sp.compress();
+      auxiliary.reinit(sp);
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::make_assembled_pattern()
+    {
+      // The coupled tangent: FE cells plus each PD row with its family
+      // (family-element models: every node of a family with all of them,
+      // like a cell).
+      TrilinosWrappers::SparsityPattern sp(owned, owned, relevant, comm);
+      add_cell_entries(sp, false);
+      std::vector<types::global_dof_index> cols;
+      for (std::size_t o = 0; o < families.owners.size(); ++o)
+        {
+          const unsigned int k = families.owners[o];
+          cols.clear();
+          for (unsigned int c = 0; c < dim; ++c)
+            cols.push_back(node_dof[k][c]);
+          for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
+               ++j)
+            for (unsigned int c = 0; c < dim; ++c)
+              cols.push_back(node_dof[families.members[j]][c]);
+          std::sort(cols.begin(), cols.end());
+          if (layout.family_elements)
+            for (const auto row : cols)
+              sp.add_entries(row, cols.begin(), cols.end(), true);
+          else
+            for (unsigned int c = 0; c < dim; ++c)
+              sp.add_entries(node_dof[k][c], cols.begin(), cols.end(), true);
+        }
+      sp.compress();
+      solver.matrix_rebuilt();
+      matrix.reinit(sp);
+      n_matrix_entries = matrix.n_nonzero_elements();
+      tangent_outdated = true;
     }
 
     template <int dim>

@@ -255,8 +255,9 @@ namespace pdfem
       // The run's own constraints and state again.
       std::swap(s.dof_fixed, patch_fixed);
       s.update_held();
-      s.u_tangent     = saved_state;
-      s.tangent_stale = true;
+      s.u_tangent        = saved_state;
+      s.tangent_stale    = true;
+      s.tangent_outdated = true;
       s.solver.preconditioner_matrix_changed();
       return patch;
     }

@@ -108,6 +108,12 @@ namespace pdfem
             }
         }
 
+        bool
+        needs_assembled_matrix() const override
+        {
+          return true;
+        }
+
         void
         check(const RunTraits &traits) const override
         {

@@ -235,6 +235,12 @@ namespace pdfem
           check_relaxation_settings(settings, file);
         }
 
+        bool
+        needs_assembled_matrix() const override
+        {
+          return true;
+        }
+
         void
         check(const RunTraits &traits) const override
         {

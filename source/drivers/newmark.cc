@@ -333,6 +333,12 @@ namespace pdfem
           return {step_note};
         }
 
+        bool
+        needs_assembled_matrix() const override
+        {
+          return true;
+        }
+
         void
         check(const RunTraits &traits) const override
         {

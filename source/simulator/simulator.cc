@@ -150,18 +150,20 @@ namespace pdfem
       Fracture::create_criterion<dim>(fracture.criterion, file);
     if (plugins.criterion)
       plugins.criterion->initialize(fracture, file);
-    check_plugins<dim>(*plugins.driver,
-                       plugins.criterion.get(),
-                       make_run_traits(file,
-                                       dim,
-                                       plugins.model_name,
-                                       nonlinear_model,
-                                       density,
-                                       linear_solver,
-                                       driver_settings.type,
-                                       plugins.model && plugins.model->layout()
-                                                          .smooth_degradation),
-                       fracture);
+    check_plugins<dim>(
+      *plugins.driver,
+      plugins.criterion.get(),
+      make_run_traits(
+        file,
+        dim,
+        plugins.model_name,
+        nonlinear_model,
+        density,
+        linear_solver.resolve(nonlinear_model,
+                              plugins.driver->needs_assembled_matrix()),
+        driver_settings.type,
+        plugins.model && plugins.model->layout().smooth_degradation),
+      fracture);
     return plugins;
   }
 
@@ -550,6 +552,10 @@ namespace pdfem
                                   s.setup.settings.linear_solver);
     if (plugins.model)
       s.setup.settings.pd_model = plugins.model;
+    // Linear solver Type = auto made concrete for this model and driver.
+    s.setup.settings.linear_solver = s.setup.settings.linear_solver.resolve(
+      plugins.model && !plugins.model->linear(),
+      plugins.driver->needs_assembled_matrix());
     s.model_name = plugins.model_name;
     s.driver     = std::move(plugins.driver);
     s.criterion  = std::move(plugins.criterion);

@@ -239,6 +239,8 @@ namespace pdfem
     Coupling::ProblemSize                     initial_size;
     double                                    load_factor = 0.;
     unsigned int                              n_steps     = 0;
+    /// The solver's changes of path already printed (Type = auto).
+    mutable std::size_t printed_solver_switches = 0;
     /// The largest secant stiffness of the grips so far (quasi-static
     /// growth; separated_by_load()).
     double peak_grip_stiffness = 0.;

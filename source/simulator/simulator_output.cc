@@ -101,6 +101,10 @@ namespace pdfem
     *progress << (growth ? "  left <= " : "  left ~") << std::fixed
               << std::setprecision(1) << left << " s" << std::defaultfloat
               << std::endl;
+    // Linear solver Type = auto: a change of path in this step, and why.
+    const auto switches = coupled->solver_switches();
+    for (; printed_solver_switches < switches.size(); ++printed_solver_switches)
+      *progress << "  " << switches[printed_solver_switches] << std::endl;
   }
 
   template <int dim>
@@ -207,6 +211,7 @@ namespace pdfem
       }
     for (const auto &p : postprocessors)
       p->write_sections(json);
+    coupled->write_solver_summary(json);
 
     json.begin_object("timings");
     for (const auto &[phase, seconds] : setup.timings)

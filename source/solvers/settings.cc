@@ -24,13 +24,18 @@ namespace pdfem
       prm.enter_subsection("Linear solver");
       prm.declare_entry("Type",
                         "direct",
-                        Selection("direct|gmres|cg"),
+                        Selection("direct|gmres|cg|auto"),
                         "direct (sparse LU), gmres (preconditioned, "
-                        "restarted GMRES) or cg (preconditioned conjugate "
+                        "restarted GMRES), cg (preconditioned conjugate "
                         "gradients: a symmetric operator only, i.e. FE "
                         "alone or a PD model with a symmetric tangent such "
                         "as 'pdlsm energy' or 'rnp'; the collocated 'pdlsm' "
-                        "is not symmetric).");
+                        "is not symmetric) or auto: the run chooses between "
+                        "matrix-free gmres ('amg fe') and a direct "
+                        "factorisation kept across solves by what their "
+                        "solves cost, and says why in summary.json "
+                        "(linear_solver.choice). A nonlinear PD model, "
+                        "Newmark and dynamic relaxation get 'direct'.");
       prm.declare_entry("Direct solver",
                         "mumps",
                         Selection("mumps|klu"),
@@ -67,6 +72,36 @@ namespace pdfem
                         "30 takes 319 iterations, 150 takes 109 (= no "
                         "restart). Memory: 8 bytes x DoFs x this number.");
       prm.leave_subsection();
+    }
+
+    Settings
+    Settings::resolve(const bool nonlinear_model,
+                      const bool driver_needs_matrix) const
+    {
+      if (type != "auto")
+        return *this;
+      Settings resolved  = *this;
+      resolved.automatic = true;
+      if (nonlinear_model || driver_needs_matrix)
+        {
+          resolved.type = "direct";
+          resolved.choice_reason =
+            nonlinear_model ? "the PD model is nonlinear: its tangent "
+                              "is assembled and factorised, the "
+                              "factorisation kept while it is unchanged" :
+                              "the driver works with the assembled "
+                              "matrix";
+        }
+      else
+        {
+          resolved.type           = "gmres";
+          resolved.preconditioner = "amg fe";
+          resolved.choose_by_cost = true;
+          resolved.choice_reason =
+            "a linear model: matrix-free GMRES needs no assembled matrix; a "
+            "direct factorisation is tried where solves reuse one matrix";
+        }
+      return resolved;
     }
 
     void

@@ -20,7 +20,8 @@
 //       members, equal strings and booleans, and numbers that agree to TOL
 //       relative to the largest magnitude among the numbers of their object
 //       (as csv does per quantity); the run-dependent members (timings,
-//       peak_memory_mb_rank0, input_file, message) are skipped.
+//       peak_memory_mb_rank0, input_file, message, linear_solver.choice)
+//       are skipped.
 //   pdfem_check fields a.csv b.csv l2|max COLUMNS TOL
 //       two field files of one mesh (nodes.csv of two runs), rows in the
 //       same order: l2 passes if sqrt(sum (a - b)^2) <= TOL sqrt(sum b^2)
@@ -201,11 +202,11 @@ namespace
                const double       tol,
                unsigned int      &n_compared)
   {
-    static const std::vector<std::string> skipped = {"timings",
-                                                     "peak_memory_mb_rank0",
-                                                     "input_file",
-                                                     "message"};
-    bool                                  ok      = true;
+    // linear_solver.choice (Type = auto) holds measured costs and the
+    // memory available; its outcome (path, factorizations) is compared.
+    static const std::vector<std::string> skipped = {
+      "timings", "peak_memory_mb_rank0", "input_file", "message", "choice"};
+    bool ok = true;
     // The force balance is a fraction of the load, round-off in a
     // conservative run: judged against 1 (as in the csv comparison).
     double scale = path == "force_balance" ? 1. : 0.;

@@ -45,6 +45,10 @@ namespace dealii
 namespace pdfem
 {
   class StateArchive;
+  namespace IO
+  {
+    class JsonWriter;
+  }
   namespace PD
   {
     struct Families;
@@ -539,6 +543,20 @@ namespace pdfem
       mapping() const;
       const std::vector<bool> &
       cell_is_pd() const;
+      /**
+       * summary.json's "linear_solver" section: the configured type, the
+       * path the solves take now, their counts (solves, GMRES iterations,
+       * direct analyses and factorisations) and, for Type = auto, the
+       * choice with its reasons (Solvers::SolverChoice::write()).
+       */
+      void
+      write_solver_summary(IO::JsonWriter &json) const;
+
+      /// Type = auto: the changes of path so far (empty otherwise), for the
+      /// progress output.
+      std::vector<std::string>
+      solver_switches() const;
+
       /// Per active cell: a crack runs through it (broken bonds split its
       /// vertices into two or more groups; PD cells only, judged from the
       /// locally owned families). The output's "cracked" cell array.

@@ -218,6 +218,15 @@ namespace pdfem
         return false;
       }
 
+      /// Does the driver work with the assembled matrix itself (factorise
+      /// it, read its rows)? Linear solver Type = auto then takes the
+      /// direct path (Solvers::Settings::resolve()).
+      virtual bool
+      needs_assembled_matrix() const
+      {
+        return false;
+      }
+
       /// Remarks for stderr before the run (e.g. an unstable choice).
       virtual std::vector<std::string>
       notes() const

@@ -101,6 +101,14 @@ namespace pdfem
       void
       matrix_rebuilt();
 
+      /// Solve with a direct factorisation of the assembled matrix (@p
+      /// direct) or with GMRES (Type = auto changing its path).
+      void
+      use_direct(const bool direct)
+      {
+        settings.type = direct ? "direct" : "gmres";
+      }
+
       /// The number of direct numeric factorisations so far.
       unsigned int
       n_factorizations() const

@@ -18,12 +18,18 @@ namespace pdfem
     /** `subsection Linear solver`. */
     struct Settings
     {
-      std::string  type           = "direct"; // direct | gmres | cg
+      std::string  type           = "direct"; // direct | gmres | cg | auto
       std::string  direct_solver  = "mumps";  // mumps | klu
       std::string  preconditioner = "amg fe"; // amg fe | amg | ilu
       double       tolerance      = 1e-10;    // relative residual (gmres)
       unsigned int max_iterations = 2000;
       unsigned int restart        = 150; // gmres: Krylov vectors kept
+      /// Type = auto, resolved by resolve(): the system chooses between the
+      /// matrix-free and the direct path by their measured costs
+      /// (SolverChoice), starting as type says, for choice_reason.
+      bool        automatic      = false;
+      bool        choose_by_cost = false;
+      std::string choice_reason;
 
       /// A Krylov method (gmres or cg), not a factorisation.
       bool
@@ -45,6 +51,17 @@ namespace pdfem
       {
         return iterative() && preconditioner == "amg fe";
       }
+
+      /**
+       * Type = auto made concrete for a run: a nonlinear PD model, or a
+       * driver that works with the assembled matrix (Newmark, dynamic
+       * relaxation), gets the direct path; otherwise matrix-free GMRES
+       * ('amg fe'), with choose_by_cost set so that the system may go over
+       * to a direct factorisation where that is cheaper. Other types are
+       * returned as they are.
+       */
+      Settings
+      resolve(bool nonlinear_model, bool driver_needs_matrix) const;
 
       static void
       declare(dealii::ParameterHandler &prm);
