@@ -15,11 +15,13 @@
 // pdfem_study.h.
 #include "pdfem_study.h"
 
+#include <pdfem/base/interrupts.h>
 #include <pdfem/base/mpi_startup.h>
 
 #include <deal.II/base/mpi.h>
 
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 
@@ -56,7 +58,8 @@ pareto) and, with pdfem-plot beside pdfem-study (VTK), DIR/study.png: the error 
 output against the wall time, log-log, each run a marker, the Pareto front a line.
 Exit status: 0 every run completed (or separated); 2 bad input, one line on stderr, nothing run
 (an output key the first finished run does not have stops the study there); 3 a run failed
-(it stays in study.csv with its exit state; the study goes on).
+(it stays in study.csv with its exit state; the study goes on), or SIGINT/SIGTERM stopped the
+study after the run it came in (a second signal ends it at once).
 )";
 } // namespace pdfem_study
 
@@ -156,6 +159,37 @@ namespace
     return "";
   }
 
+  /// SIGINT or SIGTERM received between runs or during an mpirun run.
+  volatile std::sig_atomic_t stop_signal = 0;
+
+  extern "C" void
+  remember_stop(int s)
+  {
+    stop_signal = s;
+    std::signal(s, SIG_DFL); // a second one ends the study at once
+  }
+
+  /// Catches SIGINT and SIGTERM (unless they are ignored, as in a
+  /// background job), so that the study ends after the run they come in.
+  void
+  catch_stop_signals()
+  {
+    for (int s : {SIGINT, SIGTERM})
+      if (std::signal(s, remember_stop) == SIG_IGN)
+        std::signal(s, SIG_IGN);
+  }
+
+  /// The signal that asks the study to stop (0: none): ours, or the one
+  /// Scene::run's handler took during the last in-process run (which ends
+  /// that run after its step: a run of one step still completes).
+  int
+  stop_requested()
+  {
+    return stop_signal != 0 ?
+             static_cast<int>(stop_signal) :
+             pdfem::StopOnSignals::stop_requested(MPI_COMM_WORLD);
+  }
+
   /// "completed, 1.23 s" for the progress line.
   std::string
   outcome(const RunResult &r)
@@ -201,6 +235,7 @@ main(int argc, char **argv)
       return bad_input;
     }
 
+  catch_stop_signals();
   std::vector<Point> grid;
   try
     {
@@ -253,6 +288,12 @@ main(int argc, char **argv)
                                          dir + "/reference",
                                          options.outputs);
       std::cout << outcome(r) << std::endl;
+      if (const int signal = stop_requested(); signal != 0)
+        {
+          std::cout << pdfem::StopOnSignals::name(signal)
+                    << ": the study stops after the reference run" << std::endl;
+          return failed_runs;
+        }
       if (!check_keys(r, dir + "/reference"))
         return bad_input;
       if (r.finished())
@@ -288,9 +329,14 @@ main(int argc, char **argv)
             missing);
       failed = failed || !row.result.finished();
       rows.push_back(row);
-      if (row.result.exit_state == "interrupted")
+      if (const int signal = stop_requested();
+          signal != 0 || row.result.exit_state == "interrupted")
         {
-          std::cout << "interrupted: the study stops here" << std::endl;
+          std::cout << (signal != 0 ? pdfem::StopOnSignals::name(signal) :
+                                      "the run was interrupted")
+                    << ": the study stops after run " << point.number << " of "
+                    << grid.size() << std::endl;
+          failed = true;
           break;
         }
     }
