@@ -98,6 +98,18 @@ namespace pdfem
                         "m_e: FE cells within m_e element sizes of a crack "
                         "become PD, at the start and whenever a crack grows; "
                         "0: the PD region of the mesh never changes.");
+      prm.declare_entry("Automatic region",
+                        "0",
+                        Double(0., 1.),
+                        "f in (0, 1]: after each equilibrium, FE cells where "
+                        "the largest principal stress at a node reaches f x "
+                        "Tensile strength become PD, with the FE cells "
+                        "within Adaptive margin element sizes of them, and "
+                        "the step is solved again at the same load; the load "
+                        "jumps no further than to where an FE cell reaches "
+                        "it. A scene may then start all FE (PD regions = "
+                        "none). Needs Tensile strength > 0 and Adaptive "
+                        "margin > 0; quasi-static runs. 0: off.");
       prm.declare_entry("No-fail nodes",
                         "",
                         Anything(),
@@ -130,6 +142,7 @@ namespace pdfem
       growth_length       = prm.get_double("Growth length");
       top_k               = prm.get_integer("Top K");
       adaptive_margin     = prm.get_double("Adaptive margin");
+      automatic_region    = prm.get_double("Automatic region");
       critical_stretch    = prm.get_double("Critical stretch");
       fracture_energy     = prm.get_double("Fracture energy");
 
@@ -150,6 +163,19 @@ namespace pdfem
                          "Fracture/Front half-width",
                          number(front_half_width) + " is not positive",
                          "> 0 element sizes");
+      if (automatic_region > 0. && !(tensile_strength > 0.))
+        throw InputError(file,
+                         "Fracture/Automatic region",
+                         "the indicator is a fraction of the Tensile "
+                         "strength, which is 0",
+                         "Tensile strength > 0, or Automatic region = 0");
+      if (automatic_region > 0. && !(adaptive_margin > 0.))
+        throw InputError(file,
+                         "Fracture/Automatic region",
+                         "the cells that reach the indicator grow by the "
+                         "Adaptive margin, which is 0",
+                         "Adaptive margin > 0 (e.g. 3), or Automatic region "
+                         "= 0");
     }
 
   } // namespace Fracture

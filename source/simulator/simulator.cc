@@ -3,6 +3,7 @@
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
 #include <pdfem/base/interrupts.h>
+#include <pdfem/fracture/automatic_region.h>
 #include <pdfem/fracture/crack_growth.h>
 #include <pdfem/simulator/summary.h>
 
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 
 #include "simulator_impl.h"
 
@@ -101,6 +103,13 @@ namespace pdfem
                        "Fracture/Adaptive margin",
                        "the adaptive PD region belongs to quasi-static runs",
                        "0 with Driver/Type = " + traits.driver_name);
+    if (fracture.automatic_region > 0. && !driver.grows_cracks())
+      throw InputError(traits.file,
+                       "Fracture/Automatic region",
+                       "the automatic PD region grows between the steps of "
+                       "a quasi-static run",
+                       "0 with Driver/Type = " + traits.driver_name +
+                         ", or Driver/Type = quasi-static");
   }
 
   std::string
@@ -398,11 +407,19 @@ namespace pdfem
     if (fields_due)
       write_fields(record.time);
 
+    // Fracture/Automatic region: FE cells at the threshold become PD (this
+    // step's row and fields are the old region's) and the step is solved
+    // again at the same load.
+    double     region_ratio = std::numeric_limits<double>::infinity();
+    const bool region_grew  = setup.fracture.automatic_region > 0. &&
+                             allow_growth &&
+                             grow_region_by_stress(region_ratio);
     Drivers::GrowthCheck check;
-    check.grew                = assessment.broken_bonds > 0;
-    check.critical_load_ratio = assessment.critical_load_ratio;
-    check.separated           = assessment.pieces > 1;
-    if (cracks && allow_growth && !check.separated)
+    check.grew = assessment.broken_bonds > 0 || region_grew;
+    check.critical_load_ratio =
+      Fracture::capped_load_ratio(assessment.critical_load_ratio, region_ratio);
+    check.separated = assessment.pieces > 1;
+    if (cracks && allow_growth && !check.separated && !region_grew)
       separated_by_load(record.load_factor, check);
     // The PD region follows the cracks: a new system on the same mesh and
     // DoFs, with every crack so far cut.

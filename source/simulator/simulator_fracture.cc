@@ -4,6 +4,8 @@
 // and whether the body still carries the load.
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/state_archive.h>
+#include <pdfem/fracture/automatic_region.h>
 #include <pdfem/fracture/crack_growth.h>
 
 #include <deal.II/base/mpi.h>
@@ -84,13 +86,59 @@ namespace pdfem
       }
   }
 
-#define INSTANTIATE(dim)                                           \
-  template unsigned long Simulator<dim>::Impl::accept_model_state( \
-    const Drivers::SystemInterface::Vector &);                     \
-  template void Simulator<dim>::Impl::hold_fragments();            \
-  template void Simulator<dim>::Impl::separated_by_model(          \
-    const Drivers::StepRecord &) const;                            \
-  template void Simulator<dim>::Impl::separated_by_load(           \
+  template <int dim>
+  bool
+  Simulator<dim>::Impl::grow_region_by_stress(double &load_ratio)
+  {
+    const auto &f = setup.fracture;
+    if (!results)
+      update_results(u);
+    const Fracture::RegionGrowth growth =
+      Fracture::extend_pd_region_by_stress(*coupled,
+                                           *results,
+                                           f.automatic_region *
+                                             f.tensile_strength,
+                                           f.adaptive_margin,
+                                           setup.cell_is_pd);
+    load_ratio = growth.load_ratio;
+    if (growth.new_pd_cells == 0)
+      return false;
+    rebuild_coupled();
+    results.reset();
+    if (progress)
+      *progress << "  PD region: " << growth.new_pd_cells
+                << " FE cells reached " << f.automatic_region
+                << " x the tensile strength (with their margin) and became "
+                   "PD; the step is solved again\n";
+    return true;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::Impl::rebuild_coupled()
+  {
+    // The fracture history (cuts, bonds broken one by one, fragments held)
+    // replayed on the new families, as a restart does.
+    StateArchive history;
+    coupled->save_fracture_state(history);
+    coupled.reset();
+    coupled = std::make_unique<Coupling::CoupledSystem<dim>>(*setup.tria,
+                                                             setup.cell_is_pd,
+                                                             setup.settings);
+    coupled->restore_fracture_state(history);
+    if (cracks)
+      cracks->attach(*coupled);
+  }
+
+#define INSTANTIATE(dim)                                                        \
+  template bool          Simulator<dim>::Impl::grow_region_by_stress(double &); \
+  template void          Simulator<dim>::Impl::rebuild_coupled();               \
+  template unsigned long Simulator<dim>::Impl::accept_model_state(              \
+    const Drivers::SystemInterface::Vector &);                                  \
+  template void Simulator<dim>::Impl::hold_fragments();                         \
+  template void Simulator<dim>::Impl::separated_by_model(                       \
+    const Drivers::StepRecord &) const;                                         \
+  template void Simulator<dim>::Impl::separated_by_load(                        \
     double, Drivers::GrowthCheck &);
   PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

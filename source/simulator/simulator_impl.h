@@ -132,6 +132,17 @@ namespace pdfem
     /// Hold the fragments cut loose (a progress line says how many nodes).
     void
     hold_fragments();
+    /// Fracture/Automatic region: FE cells at the stress threshold (and
+    /// their margin) become PD, the system is rebuilt with the bonds broken
+    /// so far (a progress line says how many cells). Returns whether the
+    /// region grew, and else sets @p load_ratio to the load factor ratio
+    /// at which the next FE node reaches the threshold.
+    bool
+    grow_region_by_stress(double &load_ratio);
+    /// A new coupled system for setup.cell_is_pd on the same mesh and
+    /// DoFs, with the fracture history of the old one replayed.
+    void
+    rebuild_coupled();
     /// End the run 'separated' (RunFailure) when the bonds the model
     /// failed cut the body into pieces (after the step @p record).
     void

@@ -39,6 +39,10 @@ namespace pdfem
       /// m_e: FE cells within m_e element sizes of a crack become PD (at the
       /// start and as cracks grow); 0 = the PD region never changes.
       double adaptive_margin = 0.;
+      /// f: FE cells whose nodal largest principal stress reaches f times
+      /// the tensile strength become PD, with adaptive_margin cells around
+      /// them (0 = off).
+      double automatic_region = 0.;
       /// critical stretch: s_c; 0 = from fracture_energy (G_c) by the
       /// bond-based relation (2D: sqrt(4 pi G_c / (9 E delta)), 3D:
       /// sqrt(5 G_c / (9 K delta))).
