@@ -2,6 +2,7 @@
 #include <pdfem/io/atomic_file.h>
 #include <pdfem/io/history.h>
 
+#include <algorithm>
 #include <cctype>
 #include <iomanip>
 #include <limits>
@@ -80,6 +81,27 @@ namespace pdfem
     std::string
     History::column_name(const std::string &name)
     {
+      // A point "(x, y[, z])" reads as at_x<x>_y<y>[_z<z>]: the coordinates
+      // named, as the bare numbers (-0.5_-1.5) did not say what they were.
+      if (name.size() > 2 && name.front() == '(' && name.back() == ')')
+        {
+          std::string       point = "at";
+          std::size_t       from  = 1;
+          const std::string axes  = "xyz";
+          for (std::size_t axis = 0; axis < axes.size(); ++axis)
+            {
+              const std::size_t to =
+                std::min(name.find(',', from), name.size() - 1);
+              std::string value;
+              for (std::size_t i = from; i < to; ++i)
+                if (!std::isspace(static_cast<unsigned char>(name[i])))
+                  value += name[i];
+              point += std::string("_") + axes[axis] + value;
+              if (to == name.size() - 1)
+                return point;
+              from = to + 1;
+            }
+        }
       std::string s;
       for (const char c : name)
         if (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-')

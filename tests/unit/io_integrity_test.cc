@@ -62,6 +62,17 @@ namespace
       written = history.add_row(row);
     EXPECT_FALSE(written);
   }
+  TEST(History, ColumnNamesSayWhatAPointIs)
+  {
+    using pdfem::IO::History;
+    EXPECT_EQ(History::column_name("left"), "left");
+    EXPECT_EQ(History::column_name("top edge"), "top_edge");
+    EXPECT_EQ(History::column_name("(-0.5, -1.5)"), "at_x-0.5_y-1.5");
+    EXPECT_EQ(History::column_name("(0,0.25, 1e-3)"), "at_x0_y0.25_z1e-3");
+    // Not a point of 2 or 3 coordinates: the general rule.
+    EXPECT_EQ(History::column_name("(1, 2, 3, 4)"), "1_2_3_4");
+  }
+
   TEST(Messages, DealIIReportsBecomeOneLine)
   {
     // What Amesos_Mumps threw on a singular matrix (no explanation, only

@@ -53,7 +53,8 @@ namespace pdfem
       bool
       add_row(const std::vector<double> &values);
 
-      /// Turn a set name ("left", "(0, -0.5)") into a column-name part.
+      /// Turn a set name into a column-name part: "left" stays, a point
+      /// "(0, -0.5)" becomes "at_x0_y-0.5".
       static std::string
       column_name(const std::string &name);
 
