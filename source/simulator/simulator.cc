@@ -216,9 +216,8 @@ namespace pdfem
     if (setup.cell_is_pd.empty())
       setup.cell_is_pd.assign(tria.n_active_cells(), false);
     // A scene may start with PD only around its cracks.
-    initial_cracks = setup.settings.cracks;
     Fracture::extend_pd_region(tria,
-                               initial_cracks,
+                               setup.settings.cracks,
                                setup.fracture.adaptive_margin,
                                setup.cell_is_pd);
     coupled      = std::make_unique<Coupling::CoupledSystem<dim>>(tria,
@@ -250,7 +249,7 @@ namespace pdfem
       cracks = std::make_unique<Fracture::CrackGrowth<dim>>(
         setup.fracture,
         setup.settings.material,
-        initial_cracks,
+        setup.settings.cracks,
         *coupled,
         setup.tip_at_end,
         dim == 3 && criterion->tracks_tips());
@@ -428,20 +427,7 @@ namespace pdfem
                                    cracks->segments(),
                                    setup.fracture.adaptive_margin,
                                    setup.cell_is_pd) > 0)
-      {
-        auto rebuilt   = setup.settings;
-        rebuilt.cracks = initial_cracks;
-        coupled.reset();
-        coupled =
-          std::make_unique<Coupling::CoupledSystem<dim>>(*setup.tria,
-                                                         setup.cell_is_pd,
-                                                         rebuilt);
-        std::vector<Mesh::Crack<dim>> grown(cracks->segments().begin() +
-                                              initial_cracks.size(),
-                                            cracks->segments().end());
-        coupled->break_bonds(grown);
-        cracks->attach(*coupled);
-      }
+      rebuild_coupled();
     if (check.grew)
       hold_fragments();
     if (degraded > 0 && !cracks)

@@ -237,7 +237,6 @@ namespace pdfem
     std::unique_ptr<Fracture::Criterion<dim>>                 criterion;
     std::unique_ptr<Coupling::CoupledSystem<dim>>             coupled;
     std::unique_ptr<Fracture::CrackGrowth<dim>>               cracks;
-    std::vector<Mesh::Crack<dim>>                             initial_cracks;
     std::vector<std::unique_ptr<Postprocess::Interface<dim>>> postprocessors;
     std::unique_ptr<IO::History>                              history;
     dealii::TrilinosWrappers::MPI::Vector                     u;
