@@ -16,21 +16,6 @@ namespace pdfem
   {
     using namespace dealii;
 
-    namespace
-    {
-      /// The circumradius about the centre, and the size measure^(1/dim).
-      template <typename Cell>
-      std::pair<double, double>
-      radius_and_size(const Cell &cell, const int dim)
-      {
-        const auto center = cell->center();
-        double     radius = 0.;
-        for (const unsigned int v : cell->vertex_indices())
-          radius = std::max(radius, cell->vertex(v).distance(center));
-        return {radius, std::pow(cell->measure(), 1. / dim)};
-      }
-    } // namespace
-
     template <int dim>
     RegionGrowth
     extend_pd_region_by_stress(const Coupling::CoupledSystem<dim> &system,
@@ -66,7 +51,7 @@ namespace pdfem
                 const Point<dim> c = cell->center();
                 for (unsigned int d = 0; d < dim; ++d)
                   seeds.push_back(c[d]);
-                seeds.push_back(radius_and_size(cell, dim).first);
+                seeds.push_back(circumradius(cell));
               }
           }
       largest = Utilities::MPI::max(largest, comm);
@@ -89,9 +74,9 @@ namespace pdfem
           const unsigned int i = cell->active_cell_index();
           if (cell_is_pd[i])
             continue;
-          const Point<dim> center   = cell->center();
-          const auto [radius, size] = radius_and_size(cell, dim);
-          const double reach        = radius + margin * size;
+          const Point<dim> center = cell->center();
+          const double     reach =
+            circumradius(cell) + margin * std::pow(cell->measure(), 1. / dim);
           for (std::size_t s = 0; s < all_seeds.size(); s += dim + 1)
             {
               Point<dim> seed;

@@ -2,6 +2,7 @@
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
 #include <pdfem/base/state_archive.h>
+#include <pdfem/fracture/automatic_region.h>
 #include <pdfem/fracture/crack_growth.h>
 #include <pdfem/pd/families.h>
 
@@ -645,11 +646,8 @@ namespace pdfem
           if (cell_is_pd[i])
             continue;
           const Point<dim> center = cell->center();
-          double           radius = 0.;
-          for (const unsigned int v : cell->vertex_indices())
-            radius = std::max(radius, cell->vertex(v).distance(center));
-          const double reach =
-            radius + margin * std::pow(cell->measure(), 1. / dim);
+          const double     reach =
+            circumradius(cell) + margin * std::pow(cell->measure(), 1. / dim);
           for (const auto &crack : cracks)
             if (distance_to_crack(center, crack) <= reach)
               {

@@ -34,6 +34,19 @@ namespace pdfem
      * Collective: the seeds of all ranks are gathered, so that @p
      * cell_is_pd stays the same on every rank.
      */
+    /// The largest distance of a vertex of @p cell from its centre: how far
+    /// the region-growing rules reach from a cell's centre to its edge.
+    template <typename Cell>
+    double
+    circumradius(const Cell &cell)
+    {
+      const auto center = cell->center();
+      double     radius = 0.;
+      for (const unsigned int v : cell->vertex_indices())
+        radius = std::max(radius, cell->vertex(v).distance(center));
+      return radius;
+    }
+
     /**
      * The load factor ratio a quasi-static driver may jump by: the
      * criterion's @p criterion_ratio, but no further than to where an FE
