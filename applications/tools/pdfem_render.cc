@@ -95,18 +95,9 @@ rendering or writing fails (e.g. no X display).
     if (v == 0.0 || !std::isfinite(v) || std::abs(v) < 1e-4 ||
         std::abs(v) >= 1e6)
       return g3(v);
-    const int decimals =
-      std::max(0, 2 - static_cast<int>(std::floor(std::log10(std::abs(v)))));
-    char text[64];
-    std::snprintf(text, sizeof(text), "%.*f", decimals, v);
-    std::string s = text;
-    if (s.find('.') != std::string::npos)
-      {
-        s.erase(s.find_last_not_of('0') + 1);
-        if (s.back() == '.')
-          s.pop_back();
-      }
-    return s;
+    return fixed_trimmed(
+      v,
+      std::max(0, 2 - static_cast<int>(std::floor(std::log10(std::abs(v))))));
   }
 
   int

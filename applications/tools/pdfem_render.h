@@ -91,6 +91,11 @@ namespace pdfem_render
   /// 1e-9.
   std::string
   plain_number(double v);
+
+  /// @p v in fixed notation with @p decimals digits after the point, its
+  /// trailing zeros (and a bare point) dropped: 2.500 -> "2.5", 3.0 -> "3".
+  std::string
+  fixed_trimmed(double v, int decimals);
 } // namespace pdfem_render
 
 #endif

@@ -294,21 +294,26 @@ namespace pdfem_render
     else if (v == std::floor(v))
       std::snprintf(text, sizeof(text), "%.0f", v);
     else
-      {
-        const int decimals =
-          std::clamp(3 - static_cast<int>(std::floor(std::log10(std::abs(v)))),
-                     0,
-                     12);
-        std::snprintf(text, sizeof(text), "%.*f", decimals, v);
-        std::string s = text;
-        if (s.find('.') != std::string::npos)
-          {
-            s.erase(s.find_last_not_of('0') + 1);
-            if (s.back() == '.')
-              s.pop_back();
-          }
-        return s;
-      }
+      return fixed_trimmed(v,
+                           std::clamp(3 - static_cast<int>(std::floor(
+                                            std::log10(std::abs(v)))),
+                                      0,
+                                      12));
     return text;
+  }
+
+  std::string
+  fixed_trimmed(const double v, const int decimals)
+  {
+    char text[64];
+    std::snprintf(text, sizeof(text), "%.*f", decimals, v);
+    std::string s = text;
+    if (s.find('.') != std::string::npos)
+      {
+        s.erase(s.find_last_not_of('0') + 1);
+        if (s.back() == '.')
+          s.pop_back();
+      }
+    return s;
   }
 } // namespace pdfem_render
