@@ -170,6 +170,12 @@ namespace pdfem_plot
   Ticks
   nice_ticks(double lo, double hi, int max_intervals);
 
+  /// The multiples of @p step inside [lo, hi] (its ends within 1e-9 of the
+  /// range count as inside; 0 exactly 0): the labels of an axis or colour
+  /// bar that must not reach past its data.
+  std::vector<double>
+  ticks_inside(double lo, double hi, double step);
+
   // ------------------------------------------------------------------------------------------------
   // Field pictures (pdfem_plot_view.cc)
   // ------------------------------------------------------------------------------------------------

@@ -310,6 +310,17 @@ namespace pdfem_plot
 #endif
   }
 
+  std::vector<double>
+  ticks_inside(const double lo, const double hi, const double step)
+  {
+    std::vector<double> values;
+    const double        eps = 1e-9 * (hi - lo);
+    for (double k = std::ceil((lo - eps) / step); k * step <= hi + eps;
+         k += 1.0)
+      values.push_back(k == 0.0 ? 0.0 : k * step);
+    return values;
+  }
+
   Ticks
   nice_ticks(double lo, double hi, int max_intervals)
   {

@@ -58,13 +58,7 @@ namespace pdfem_plot
     {
       const int max_intervals =
         std::clamp(static_cast<int>(length_px / min_gap_px), 1, 10);
-      const Ticks         t = nice_ticks(lo, hi, max_intervals);
-      std::vector<double> values;
-      const double        eps = 1e-9 * (hi - lo);
-      for (double k = std::ceil((lo - eps) / t.step); k * t.step <= hi + eps;
-           k += 1.0)
-        values.push_back(k == 0.0 ? 0.0 : k * t.step);
-      return values;
+      return ticks_inside(lo, hi, nice_ticks(lo, hi, max_intervals).step);
     }
 
     vtkSmartPointer<vtkTextActor>

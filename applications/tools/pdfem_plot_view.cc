@@ -193,12 +193,9 @@ namespace pdfem_plot
     };
     for (int max_intervals = 8; max_intervals >= 1; --max_intervals)
       {
-        const Ticks         t = nice_ticks(lo, hi, max_intervals);
-        std::vector<double> values;
-        const double        eps = 1e-9 * (hi - lo);
-        for (double k = std::ceil((lo - eps) / t.step); k * t.step <= hi + eps;
-             k += 1.0)
-          values.push_back(k == 0.0 ? 0.0 : k * t.step);
+        const Ticks         t      = nice_ticks(lo, hi, max_intervals);
+        std::vector<double> values = ticks_inside(lo, hi, t.step);
+        const double        eps    = 1e-9 * (hi - lo);
         if (values.empty() || !fits(values))
           continue;
         if (!with_ends)
