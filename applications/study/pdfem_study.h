@@ -135,9 +135,12 @@ namespace pdfem_study
   std::vector<Point>
   make_grid(const Options &options);
 
-  /// A short description of a point: "Entry=value; Entry=value".
+  /// A short description of a point: "Entry=value; Entry=value", of its
+  /// first @p n varied parameters (all by default).
   std::string
-  describe(const Options &options, const Point &point);
+  describe(const Options    &options,
+           const Point      &point,
+           const std::size_t n = static_cast<std::size_t>(-1));
 
   /// A parsed JSON document (objects, arrays, numbers, strings, true, false,
   /// null): just what summary.json needs.

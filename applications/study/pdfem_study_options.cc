@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // pdfem-study: the command line and the grid of runs it spans.
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -322,10 +323,10 @@ namespace pdfem_study
   }
 
   std::string
-  describe(const Options &options, const Point &point)
+  describe(const Options &options, const Point &point, const std::size_t n)
   {
     std::string out;
-    for (std::size_t k = 0; k < options.vary.size(); ++k)
+    for (std::size_t k = 0; k < std::min(n, options.vary.size()); ++k)
       {
         const std::string &path = options.vary[k].path;
         out += (k ? "; " : "") + path.substr(path.rfind('/') + 1) + "=" +

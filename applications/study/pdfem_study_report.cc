@@ -252,22 +252,54 @@ namespace pdfem_study
         argv = {xvfb, "-a"};
       }
 
-    // Every run its own one-point series (pdfem-plot draws a one-point series
-    // as a marker), the Pareto front a second file (drawn as a dashed line).
-    std::ofstream            points(folder + "/study_chart.csv");
+    // With one --vary every run is its own one-point series (pdfem-plot
+    // draws it as a marker), labelled with its value. With more, the runs
+    // that share the values of all but the last --vary are one series, a
+    // line with markers through the last parameter's values in their order
+    // (e.g. "Type=newmark" along the time steps): a legend of a few lines
+    // instead of one per run. The Pareto front is a second file (dashed).
+    const bool               grouped = options.vary.size() >= 2;
+    const std::size_t        n_group = options.vary.size() - 1;
     std::vector<std::string> columns, labels;
-    for (const Row *row : drawn)
+    std::vector<std::size_t> series_of(drawn.size());
+    std::vector<std::string> first_value, last_value;
+    for (std::size_t i = 0; i < drawn.size(); ++i)
       {
-        columns.push_back("run_" + std::to_string(row->point.number));
-        labels.push_back(std::to_string(row->point.number) + ": " +
-                         describe(options, row->point));
+        const Point      &point = drawn[i]->point;
+        const std::string name  = grouped ? describe(options, point, n_group) :
+                                            std::to_string(point.number) + ": " +
+                                             describe(options, point);
+        const std::string value =
+          point.values.empty() ? "" : point.values.back();
+        const auto found = std::find(labels.begin(), labels.end(), name);
+        series_of[i]     = found - labels.begin();
+        if (found == labels.end())
+          {
+            labels.push_back(name);
+            columns.push_back("series_" + std::to_string(labels.size()));
+            first_value.push_back(value);
+            last_value.push_back(value);
+          }
+        last_value[series_of[i]] = value;
       }
+    if (grouped)
+      {
+        const std::string &path = options.vary.back().path;
+        const std::string  last = path.substr(path.rfind('/') + 1);
+        for (std::size_t s = 0; s < labels.size(); ++s)
+          labels[s] += first_value[s] == last_value[s] ?
+                         " (" + last + "=" + first_value[s] + ")" :
+                         " (" + last + "=" + first_value[s] + " ... " +
+                           last_value[s] + ")";
+      }
+    std::ofstream points(folder + "/study_chart.csv");
     points << "wall_seconds," << join(columns, ",") << "\n";
     for (std::size_t i = 0; i < drawn.size(); ++i)
       {
         points << format(drawn[i]->result.wall_seconds);
-        for (std::size_t j = 0; j < drawn.size(); ++j)
-          points << "," << (i == j ? format(drawn[i]->errors[0]) : "");
+        for (std::size_t s = 0; s < columns.size(); ++s)
+          points << ","
+                 << (series_of[i] == s ? format(drawn[i]->errors[0]) : "");
         points << "\n";
       }
     points.close();
@@ -313,11 +345,13 @@ namespace pdfem_study
                                             scene_name(options.scene) +
                                               ": error against run time",
                                             "--legend",
-                                            drawn.size() <= 10 ? "auto" :
-                                                                 "none",
+                                            labels.size() <= 11 ? "auto" :
+                                                                  "none",
                                             "--out",
                                             folder + "/study.png"};
     argv.insert(argv.end(), chart.begin(), chart.end());
+    if (grouped)
+      argv.push_back("--markers");
     const int code = run_program(argv, folder + "/chart.log");
     if (code != 0)
       return "no chart: pdfem-plot failed (exit status " +

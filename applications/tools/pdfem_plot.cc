@@ -70,6 +70,7 @@ chart: line chart of columns of comma-separated files with a header row (e.g. hi
   --legend POS          auto (default: the corner that hides the fewest data), top-right,
                         top-left, bottom-right, bottom-left or none
   --points              draw markers instead of lines
+  --markers             draw lines with a marker at every point
   --size W H            picture size in pixels (default 1000 700)
   --out OUT.png         the picture to write (required)
   Numbers may be in any format std::stod reads (1, -2.5, 1e-3, inf, nan); empty cells and nan/inf

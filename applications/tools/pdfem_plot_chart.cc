@@ -364,6 +364,7 @@ namespace pdfem_plot
         "auto, top-right, top-left, bottom-right, bottom-left or none",
         1},
        {"--points", "", 0},
+       {"--markers", "", 0},
        {"--size", "W H", 2},
        {"--out", "OUT.png", 1}});
     const std::string file = input_file(a, "a .csv file");
@@ -387,6 +388,12 @@ namespace pdfem_plot
         in_quotes(legend));
     const bool logx = a.has("--logx"), logy = a.has("--logy"),
                points = a.has("--points");
+    // --markers: lines with a marker at every point (a path through a
+    // parameter's values, say).
+    const bool markers = a.has("--markers");
+    if (points && markers)
+      throw UsageError("--points and --markers exclude each other (--points: "
+                       "markers only; --markers: lines and markers)");
 
     auto column_list = [](const std::string &option, const std::string &text) {
       std::vector<std::string> names;
@@ -526,31 +533,47 @@ namespace pdfem_plot
 
         // A single point gets a marker: a line through one point would not
         // show.
-        vtkPlot *plot = chart->AddPlot(
-          points || s.x.size() == 1 ? vtkChart::POINTS : vtkChart::LINE);
+        const bool point_plot = points || s.x.size() == 1;
+        vtkPlot   *plot =
+          chart->AddPlot(point_plot ? vtkChart::POINTS : vtkChart::LINE);
         plot->SetInputData(table, 0, 1);
         plot->SetLabel(s.label);
-        const unsigned char *rgb = palette[s.colour % n_palette];
+        // Past the palette's seven colours the series differ also in their
+        // marker and their dashes, so that no two of 35 look the same.
+        const int            round = s.colour / n_palette;
+        const unsigned char *rgb   = palette[s.colour % n_palette];
         plot->SetColor(rgb[0], rgb[1], rgb[2], 255);
         plot->SetWidth(points ? 1.5f : 2.5f);
         if (auto *pp = vtkPlotPoints::SafeDownCast(plot))
           {
-            if (points || s.x.size() == 1)
+            if (point_plot || markers)
               {
                 // The second file's crosses are larger and drawn later, so
                 // that they show on top of the first file's dots.
+                static const int styles[] = {vtkPlotPoints::CIRCLE,
+                                             vtkPlotPoints::SQUARE,
+                                             vtkPlotPoints::DIAMOND,
+                                             vtkPlotPoints::PLUS,
+                                             vtkPlotPoints::CROSS};
                 pp->SetMarkerStyle(s.from_second_file ? vtkPlotPoints::CROSS :
-                                                        vtkPlotPoints::CIRCLE);
+                                                        styles[round % 5]);
                 pp->SetMarkerSize(std::max(6.0f, font * 0.5f) *
                                   (s.from_second_file ? 1.8f : 1.0f));
-                if (s.from_second_file)
+                if (s.from_second_file && point_plot)
                   plot->SetWidth(3.0f);
               }
             else
               pp->SetMarkerStyle(vtkPlotPoints::NONE);
           }
-        if (s.from_second_file && !points)
-          plot->GetPen()->SetLineType(vtkPen::DASH_LINE);
+        if (!point_plot)
+          {
+            static const int dashes[] = {vtkPen::SOLID_LINE,
+                                         vtkPen::DASH_LINE,
+                                         vtkPen::DOT_LINE,
+                                         vtkPen::DASH_DOT_LINE};
+            plot->GetPen()->SetLineType(s.from_second_file ? vtkPen::DASH_LINE :
+                                                             dashes[round % 4]);
+          }
       }
 
     auto style_axis = [&](vtkAxis *axis, const std::string &title, bool log) {
@@ -626,7 +649,9 @@ namespace pdfem_plot
       const double plot_w     = width - 8.0 * font,
                    plot_h     = height - title_px - 5.0 * font;
       const double pad =
-        points ? 0.02 : 0.0; // room for whole markers at the ends of the axes
+        points || markers ?
+          0.02 :
+          0.0; // room for whole markers at the ends of the axes
       std::array<double, 2> xr{std::log10(x0), std::log10(x1)},
         yr{std::log10(yl), std::log10(yh)};
       if (!logx)

@@ -11,6 +11,7 @@
 #   failed_run        a run that diverges stays in study.csv with its state and no error; exit 3
 #   ranks             --vary ranks=1,2: mpirun pdfem runs (in_process 0), outputs as pdfem's (1e-10)
 #   chart             study.png is a PNG, study_pareto.csv holds the runs marked pareto = 1
+#   chart_series      with two --vary, study_chart.csv has one series per value of the first
 #   bad_vary, unknown_parameter, unknown_output, unknown_option
 #                     exit status 2, one line on stderr naming the option, no study.csv
 set -u
@@ -155,6 +156,21 @@ chart)
   [ "$(head -c 8 study/study.png | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] || { cat study.log; cat study/chart.log; fail "study.png is not a PNG"; }
   front=$(awk -F, 'NR > 1 && $NF == 1' study/study.csv | wc -l)
   [ "$(($(wc -l < study/study_pareto.csv) - 1))" -eq "$front" ] || fail "study_pareto.csv does not hold the $front pareto row(s)"
+  ;;
+chart_series)
+  # Two --vary: one series per value of the first (a line with markers through the second's
+  # values), not one per run.
+  H="Peridynamics/Horizon factor"
+  "$study" "$scene" --vary "$E=70e9,140e9" --vary "$H=3,4" --output final.max_displacement.x \
+    --reference 1.1e-4 -o study > study.log 2>&1
+  rc=$?
+  [ $rc -eq 0 ] || { cat study.log; fail "exit status $rc, expected 0"; }
+  [ "$(head -c 8 study/study.png | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] || { cat study/chart.log; fail "study.png is not a PNG"; }
+  [ "$(head -n 1 study/study_chart.csv)" = "wall_seconds,series_1,series_2" ] ||
+    fail "study_chart.csv header: $(head -n 1 study/study_chart.csv), expected two series"
+  # Runs 1 and 2 (E = 70e9) in series 1, runs 3 and 4 in series 2.
+  [ "$(awk -F, 'NR > 1 { print ($2 != "") ($3 != "") }' study/study_chart.csv | tr '\n' ' ')" = "10 10 01 01 " ] ||
+    fail "runs not grouped by the first --vary: $(cat study/study_chart.csv)"
   ;;
 bad_vary)
   "$study" "$scene" --vary "Peridynamics/Horizon factor" --output final.max_displacement.x -o study > out.log 2> err.log
