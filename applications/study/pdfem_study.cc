@@ -22,6 +22,7 @@
 
 #include <cmath>
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
@@ -125,6 +126,11 @@ namespace
                            "in " +
                            program_folder() +
                            " (allowed: an installed pdfem with pdfem-study)");
+        // Open MPI binds each rank to one core when it starts one or two:
+        // a 1-rank run would lose its threads (pdfem then uses one; its
+        // note says so). Unbound, K ranks share the machine's cores as an
+        // in-process run does. A binding the user chose stays.
+        setenv("OMPI_MCA_hwloc_base_binding_policy", "none", 0);
       }
   }
 

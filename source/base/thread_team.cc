@@ -3,7 +3,11 @@
 
 #include <deal.II/base/multithread_info.h>
 
+#include <algorithm>
 #include <chrono>
+#include <string>
+
+#include <sched.h>
 
 namespace pdfem
 {
@@ -144,4 +148,31 @@ namespace pdfem
         busy.fetch_sub(1);
       }
   }
+  unsigned int
+  cores_allowed()
+  {
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    if (sched_getaffinity(0, sizeof(set), &set) == 0 && CPU_COUNT(&set) > 0)
+      return static_cast<unsigned int>(CPU_COUNT(&set));
+    return std::max(1u, std::thread::hardware_concurrency());
+  }
+
+  std::string
+  fit_threads_to_cores()
+  {
+    const unsigned int threads = dealii::MultithreadInfo::n_threads();
+    const unsigned int cores   = cores_allowed();
+    if (threads <= cores)
+      return "";
+    dealii::MultithreadInfo::set_thread_limit(cores);
+    const std::string s = cores == 1 ? "" : "s";
+    return "this process may run on " + std::to_string(cores) + " core" + s +
+           " only (its CPU affinity: mpirun binds each rank to a core by "
+           "default when it starts one or two ranks), so it uses " +
+           std::to_string(cores) + " thread" + s + " instead of " +
+           std::to_string(threads) + "; 'mpirun --bind-to none' lets it use " +
+           std::to_string(threads);
+  }
+
 } // namespace pdfem

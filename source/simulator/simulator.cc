@@ -3,6 +3,7 @@
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
 #include <pdfem/base/interrupts.h>
+#include <pdfem/base/thread_team.h>
 #include <pdfem/fracture/automatic_region.h>
 #include <pdfem/fracture/crack_growth.h>
 #include <pdfem/simulator/summary.h>
@@ -205,10 +206,14 @@ namespace pdfem
   void
   Simulator<dim>::Impl::set_up()
   {
+    const std::string threads_note = fit_threads_to_cores();
     if (root)
-      for (const auto &notes : {setup.notes, driver->notes()})
+      for (const auto &notes : {setup.notes,
+                                driver->notes(),
+                                std::vector<std::string>{threads_note}})
         for (const auto &note : notes)
-          std::cerr << "pdfem: note: " << note << std::endl;
+          if (!note.empty())
+            std::cerr << "pdfem: note: " << note << std::endl;
 
     auto &tria = *setup.tria;
     if (!setup.restart_from.empty())
