@@ -5,7 +5,7 @@ cmake_minimum_required(VERSION 3.16)
 #    has no cycle;
 #  - no C++ file of the library, the applications or the tests is over 800 lines.
 # Usage: cmake -DSOURCE=<checkout> -P check_structure.cmake
-set(PDFEM_MODULE_ORDER base mesh pd pd_models fe solvers drivers coupling fracture io
+set(PDFEM_MODULE_ORDER base mesh pd fft pd_models fe solvers drivers coupling fracture io
     simulator postprocess scene)
 set(failures "")
 list(LENGTH PDFEM_MODULE_ORDER n_modules)

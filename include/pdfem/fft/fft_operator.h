@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef PDFEM_FFT_FFT_OPERATOR_H
+#define PDFEM_FFT_FFT_OPERATOR_H
+
+#include <pdfem/fft/operator.h>
+
+#include <memory>
+
+namespace pdfem
+{
+  namespace FFT
+  {
+    /// How FFTW chooses its algorithms (FFTW_ESTIMATE or FFTW_MEASURE).
+    enum class Planning
+    {
+      /// Heuristic plans: made at once, the same on every run.
+      estimate,
+      /// Timed plans: seconds to make (per size and thread count) and
+      /// faster; the algorithm may change between runs (round-off only).
+      measure
+    };
+
+    /// Options of FftOperator.
+    struct FftOptions
+    {
+      /// Threads of FFTW's plans (fftw3_threads) and of the pointwise
+      /// loops.
+      unsigned int threads  = 1;
+      Planning     planning = Planning::estimate;
+    };
+
+    /**
+     * The operators of Operator<dim> by the fast convolution-based method
+     * (FCBM, specs/002): every sum over the horizon is written as sums of
+     * a(x) [k * b](x), a and b nodal fields (products of u, beta, theta,
+     * 1/m), k a kernel of xi, and each convolution is evaluated as a
+     * circular convolution by real-to-complex FFTs (FFTW). Kernels are
+     * transformed once (their spectra are real for even kernels and
+     * imaginary for odd ones, so one real number per mode is kept), the two
+     * plans (r2c and c2r) are made once and reused for every transform,
+     * and sums over a kernel index are taken in Fourier space so that one
+     * inverse transform serves a whole sum.
+     *
+     * Forms evaluated (beta = chi_B lambda, [k b](x) = sum_x' k(x' - x)
+     * b(x') Delta V, u' = u(x')):
+     *
+     * - linear bond based, specs/002 eqs. 46/101:
+     *   L_i = beta ([C_ij (beta u_j)] - u_j [C_ij beta]);
+     * - nonlinear bond based, the corrected form of specs/002 §1.3 (the
+     *   printed eqs. 26/59 are wrong, §7 E1), with a = c xi,
+     *   c = alpha omega / |xi|^2;
+     * - LPS, the variable-m form of specs/002 §1.4 (signs as corrected in
+     *   §7 E2-E4, dilatation kernel g = omega xi as in E3).
+     *
+     * Per evaluation (3D): linear bond based 3 forward + 3 inverse FFTs,
+     * LPS 7 + 7, nonlinear bond based 13 + 23. FFTW headers are kept out of
+     * this header (pimpl).
+     */
+    template <int dim>
+    class FftOperator : public Operator<dim>
+    {
+    public:
+      /// Samples and transforms the kernels, makes the plans and sets the
+      /// masks to 1 (a periodic body).
+      FftOperator(const Grid<dim>  &grid,
+                  const Material   &material,
+                  const FftOptions &options = FftOptions());
+
+      ~FftOperator() override;
+
+      void
+      set_masks(const std::vector<double> &body,
+                const std::vector<double> &integrity) override;
+
+      void
+      apply(const std::vector<double> &u, std::vector<double> &force) override;
+
+      void
+      dilatation(const std::vector<double> &u,
+                 std::vector<double>       &theta) override;
+
+      void
+      energy_density(const std::vector<double> &u,
+                     std::vector<double>       &W) override;
+
+      void
+      damage(std::vector<double> &d,
+             DamageNormalisation  normalisation) override;
+
+      const std::vector<double> &
+      weighted_volume() const override;
+
+      double
+      bytes_per_node() const override;
+
+      /// The number of forward and inverse FFTs since construction.
+      std::size_t
+      n_transforms() const;
+
+    private:
+      struct Impl;
+      std::unique_ptr<Impl> impl;
+    };
+  } // namespace FFT
+} // namespace pdfem
+
+#endif

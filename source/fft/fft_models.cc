@@ -1,0 +1,298 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The three models' forms for FftOperator (specs/002 §1.2-1.4 with the
+// corrections of §7): linear bond based, nonlinear bond based, LPS, and the
+// quadratic form of the energy density.
+#include <pdfem/fft/fft_operator.h>
+
+#include <algorithm>
+
+#include "fft_operator_impl.h"
+
+namespace pdfem
+{
+  namespace FFT
+  {
+    using internal::symmetric_index;
+
+    // ----------------------------------------------- linear bond based
+    template <int dim>
+    void
+    FftOperator<dim>::Impl::apply_linear(const std::vector<double> &u,
+                                         std::vector<double>       &L)
+    {
+      // L_i = beta ([C_ij (beta u_j)] - u_j P_ij), P = [C beta]; the sum
+      // over j of the first term in Fourier space (specs/002 eq. 58).
+      fftw_complex *h[dim];
+      for (unsigned int j = 0; j < dim; ++j)
+        {
+          h[j]             = spectrum(j);
+          const double *uj = &u[j * N];
+          fill([&](std::size_t k) { return beta[k] * uj[k]; });
+          forward(h[j]);
+        }
+      fused_product(h, &C, 1., nullptr, nullptr, 0., nullptr);
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          inverse(spectrum(i));
+          double *Li = &L[i * N];
+          use([&](std::size_t k, double r) {
+            double s = r;
+            for (unsigned int j = 0; j < dim; ++j)
+              s -= u[j * N + k] * P[symmetric_index<dim>(i, j)][k];
+            Li[k] = beta[k] * s;
+          });
+        }
+    }
+
+    template <int dim>
+    void
+    FftOperator<dim>::Impl::quadratic_form(
+      const std::vector<double>              &u,
+      const std::vector<Kernel>              &kernels,
+      const std::vector<std::vector<double>> &KB,
+      std::vector<double>                    &Q)
+    {
+      // Q = sum_ij [K_ij (beta u_i u_j)] - 2 u_j S_j + u_i u_j [K_ij beta],
+      // S_j = sum_i [K_ij (beta u_i)] (specs/002 eq. 47, K symmetric).
+      fftw_complex *h = spectrum(dim + 1), *q = spectrum(dim);
+      // (spectrum(2) is the temporary of correlate_symmetric)
+      for (unsigned int i = 0; i < dim; ++i)
+        zero(spectrum(i));
+      zero(q);
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          const double *ui = &u[i * N];
+          fill([&](std::size_t k) { return beta[k] * ui[k]; });
+          forward(h);
+          for (unsigned int j = 0; j < dim; ++j)
+            multiply(
+              spectrum(j), kernels[symmetric_index<dim>(i, j)], h, 1., true);
+        }
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          {
+            const double *ui = &u[i * N], *uj = &u[j * N];
+            fill([&](std::size_t k) { return beta[k] * ui[k] * uj[k]; });
+            forward(h);
+            multiply(q,
+                     kernels[symmetric_index<dim>(i, j)],
+                     h,
+                     i == j ? 1. : 2.,
+                     true);
+          }
+      Q.resize(N);
+      inverse(q);
+      use([&](std::size_t k, double r) {
+        double s = r;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            s +=
+              u[i * N + k] * u[j * N + k] * KB[symmetric_index<dim>(i, j)][k];
+        Q[k] = s;
+      });
+      for (unsigned int j = 0; j < dim; ++j)
+        {
+          inverse(spectrum(j));
+          use([&](std::size_t k, double r) { Q[k] -= 2. * u[j * N + k] * r; });
+        }
+    }
+
+    // -------------------------------------------- nonlinear bond based
+    template <int dim>
+    void
+    FftOperator<dim>::Impl::apply_nonlinear(const std::vector<double> &u,
+                                            std::vector<double>       &L)
+    {
+      // The corrected form of specs/002 §1.3 (§7 E1), as correlations
+      // [k b] = sum' k(xi) b' Delta V, a = c xi, c = alpha omega / |xi|^2:
+      //   L_i / beta = [C_ij (beta u_j)] - u_j P_ij
+      //     + [a_j (beta u_j u_i)] - u_i [a_j (beta u_j)]
+      //     - u_j [a_j (beta u_i)] + u_i u_j q_j
+      //     + 1/2 [a_i (beta |u|^2)] - u_j [a_i (beta u_j)] + 1/2 |u|^2 q_i
+      //     + 1/2 [c (beta |u|^2 u_i)] - 1/2 u_i [c (beta |u|^2)]
+      //     - u_k [c (beta u_k u_i)] + u_k u_i [c (beta u_k)]
+      //     + 1/2 |u|^2 [c (beta u_i)] - 1/2 |u|^2 u_i p.
+      // Terms without a factor outside the correlation are summed in
+      // Fourier space (acc_i); the others are inverted one by one and
+      // added into L.
+      fftw_complex *Aacc = spectrum(dim), *h = spectrum(dim + 1),
+                   *t = spectrum(dim + 2);
+      for (unsigned int i = 0; i < dim; ++i)
+        zero(spectrum(i));
+      zero(Aacc);
+      std::fill(L.begin(), L.end(), 0.);
+      const auto U = [&](unsigned int i, std::size_t k) {
+        return u[i * N + k];
+      };
+      const auto U2 = [&](std::size_t k) {
+        double s = 0.;
+        for (unsigned int i = 0; i < dim; ++i)
+          s += U(i, k) * U(i, k);
+        return s;
+      };
+      for (unsigned int j = 0; j < dim; ++j)
+        {
+          fill([&](std::size_t k) { return beta[k] * U(j, k); });
+          forward(h);
+          for (unsigned int i = 0; i < dim; ++i)
+            multiply(spectrum(i), C[symmetric_index<dim>(i, j)], h, 1., true);
+          multiply(Aacc, a[j], h, 1., true);
+          for (unsigned int l = 0; l < dim; ++l)
+            {
+              // G = [a_l (beta u_j)]: -u_j G in L_l, -u_l G in L_j.
+              multiply(t, a[l], h, 1., false);
+              inverse(t);
+              use([&](std::size_t k, double G) {
+                L[l * N + k] -= U(j, k) * G;
+                L[j * N + k] -= U(l, k) * G;
+              });
+            }
+          multiply(t, c, h, 1., false);
+          inverse(t);
+          use([&](std::size_t k, double r) {
+            for (unsigned int i = 0; i < dim; ++i)
+              L[i * N + k] += U(j, k) * U(i, k) * r;
+            L[j * N + k] += 0.5 * U2(k) * r;
+          });
+        }
+      inverse(Aacc);
+      use([&](std::size_t k, double r) {
+        for (unsigned int i = 0; i < dim; ++i)
+          L[i * N + k] -= U(i, k) * r;
+      });
+
+      fill([&](std::size_t k) { return beta[k] * U2(k); });
+      forward(h);
+      for (unsigned int i = 0; i < dim; ++i)
+        multiply(spectrum(i), a[i], h, 0.5, true);
+      multiply(t, c, h, 1., false);
+      inverse(t);
+      use([&](std::size_t k, double r) {
+        for (unsigned int i = 0; i < dim; ++i)
+          L[i * N + k] -= 0.5 * U(i, k) * r;
+      });
+
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int l = 0; l <= i; ++l)
+          {
+            fill([&](std::size_t k) { return beta[k] * U(l, k) * U(i, k); });
+            forward(h);
+            multiply(spectrum(i), a[l], h, 1., true);
+            if (l != i)
+              multiply(spectrum(l), a[i], h, 1., true);
+            multiply(t, c, h, 1., false);
+            inverse(t);
+            use([&](std::size_t k, double R) {
+              L[i * N + k] -= U(l, k) * R;
+              if (l != i)
+                L[l * N + k] -= U(i, k) * R;
+            });
+          }
+
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          fill([&](std::size_t k) { return beta[k] * U2(k) * U(i, k); });
+          forward(h);
+          multiply(spectrum(i), c, h, 0.5, true);
+        }
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          inverse(spectrum(i));
+          use([&](std::size_t k, double r) {
+            const double u2 = U2(k);
+            double       s =
+              L[i * N + k] + r + 0.5 * u2 * q[i][k] - 0.5 * u2 * U(i, k) * p[k];
+            for (unsigned int j = 0; j < dim; ++j)
+              s += U(j, k) *
+                   (U(i, k) * q[j][k] - P[symmetric_index<dim>(i, j)][k]);
+            L[i * N + k] = beta[k] * s;
+          });
+        }
+    }
+
+    // ------------------------------------------------------------- LPS
+    template <int dim>
+    void
+    FftOperator<dim>::Impl::lps_dilatation(const std::vector<double> &u,
+                                           const bool                 keep_sums)
+    {
+      // theta = dim beta / m ([g_i (beta u_i)] - u_i [g_i beta]),
+      // g = omega xi (specs/002 §1.4 with §7 E3, E4).
+      fftw_complex *acc = spectrum(dim), *h[dim];
+      for (unsigned int j = 0; j < dim; ++j)
+        {
+          h[j]             = spectrum(j);
+          const double *uj = &u[j * N];
+          fill([&](std::size_t k) { return beta[k] * uj[k]; });
+          forward(h[j]);
+        }
+      // acc = sum_j g_j (beta u_j)^; with keep_sums h[i] <- sum_j K_ij h[j]
+      fused_product(h, keep_sums ? &K : nullptr, 1., &g, nullptr, 0., acc);
+      inverse(acc);
+      theta.resize(N);
+      use([&](std::size_t k, double r) {
+        double s = r;
+        for (unsigned int i = 0; i < dim; ++i)
+          s -= u[i * N + k] * gb[i][k];
+        theta[k] = dim * beta[k] * minv[k] * s;
+      });
+    }
+
+    template <int dim>
+    void
+    FftOperator<dim>::Impl::apply_lps(const std::vector<double> &u,
+                                      std::vector<double>       &L)
+    {
+      // L_i = beta { A [(theta/m) [g_i beta] + [g_i (beta theta/m)]]
+      //   + B [(1/m) [K_ij (beta u_j)] + [K_ij (beta u_j/m)] - u_j P_ij] }
+      // (the variable-m form of specs/002 §1.4).
+      lps_dilatation(u, true);
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          inverse(spectrum(i));
+          double *Li = &L[i * N];
+          use([&](std::size_t k, double r) { Li[k] = B * minv[k] * r; });
+        }
+      fftw_complex *h[dim], *ht = spectrum(dim);
+      for (unsigned int j = 0; j < dim; ++j)
+        {
+          h[j]             = spectrum(j);
+          const double *uj = &u[j * N];
+          fill([&](std::size_t k) { return beta[k] * minv[k] * uj[k]; });
+          forward(h[j]);
+        }
+      fill([&](std::size_t k) { return beta[k] * minv[k] * theta[k]; });
+      forward(ht);
+      fused_product(h, &K, B, &g, ht, A, nullptr);
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          inverse(spectrum(i));
+          double *Li = &L[i * N];
+          use([&](std::size_t k, double r) {
+            double s = Li[k] + r + A * theta[k] * minv[k] * gb[i][k];
+            for (unsigned int j = 0; j < dim; ++j)
+              s -= B * u[j * N + k] * P[symmetric_index<dim>(i, j)][k];
+            Li[k] = beta[k] * s;
+          });
+        }
+    }
+
+#define PDFEM_FFT_INSTANTIATE(dim)                                             \
+  template void FftOperator<dim>::Impl::apply_linear(                          \
+    const std::vector<double> &, std::vector<double> &);                       \
+  template void FftOperator<dim>::Impl::apply_nonlinear(                       \
+    const std::vector<double> &, std::vector<double> &);                       \
+  template void FftOperator<dim>::Impl::apply_lps(const std::vector<double> &, \
+                                                  std::vector<double> &);      \
+  template void FftOperator<dim>::Impl::lps_dilatation(                        \
+    const std::vector<double> &, bool);                                        \
+  template void FftOperator<dim>::Impl::quadratic_form(                        \
+    const std::vector<double> &,                                               \
+    const std::vector<Kernel> &,                                               \
+    const std::vector<std::vector<double>> &,                                  \
+    std::vector<double> &);
+    PDFEM_FFT_INSTANTIATE(2)
+    PDFEM_FFT_INSTANTIATE(3)
+#undef PDFEM_FFT_INSTANTIATE
+  } // namespace FFT
+} // namespace pdfem

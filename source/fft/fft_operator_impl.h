@@ -1,0 +1,256 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The state of FftOperator (not installed): the FFTW plans, the kernel
+// spectra, the mask fields and the work spectra, with the Fourier-space
+// helpers the models' forms are written with.
+#ifndef PDFEM_SOURCE_FFT_FFT_OPERATOR_IMPL_H
+#define PDFEM_SOURCE_FFT_FFT_OPERATOR_IMPL_H
+
+#include <pdfem/fft/fft_operator.h>
+
+#include <cstring>
+#include <vector>
+
+#include "fft_tools.h"
+#include <fftw3.h>
+
+namespace pdfem
+{
+  namespace FFT
+  {
+    template <int dim>
+    struct FftOperator<dim>::Impl
+    {
+      /**
+       * A kernel's spectrum conj(k^)(kappa) times Delta V / N (the scale of
+       * a correlation sum_x' k(x' - x) b(x') Delta V by an unnormalised
+       * inverse FFT): real for an even kernel, i times a real number for an
+       * odd one; @p s holds that real number.
+       */
+      struct Kernel
+      {
+        std::vector<double> s;
+        bool                odd = false;
+      };
+
+      Impl(const Grid<dim>  &grid,
+           const Material   &material,
+           const FftOptions &o);
+      ~Impl();
+
+      /// A work spectrum (allocated at the first use).
+      fftw_complex *
+      spectrum(unsigned int i);
+
+      /// real = f(k) for every node.
+      template <typename F>
+      void
+      fill(const F &f)
+      {
+        double *r = real;
+        internal::parallel_for(threads, N, [&](std::size_t b, std::size_t e) {
+          for (std::size_t k = b; k < e; ++k)
+            r[k] = f(k);
+        });
+      }
+
+      /// g(k, real[k]) for every node, after an inverse transform.
+      template <typename G>
+      void
+      use(const G &g)
+      {
+        const double *r = real;
+        internal::parallel_for(threads, N, [&](std::size_t b, std::size_t e) {
+          for (std::size_t k = b; k < e; ++k)
+            g(k, r[k]);
+        });
+      }
+
+      void
+      forward(fftw_complex *out)
+      {
+        fftw_execute_dft_r2c(forward_plan, real, out);
+        ++transforms;
+      }
+
+      /// real = F^-1(in) (unnormalised); destroys @p in.
+      void
+      inverse(fftw_complex *in)
+      {
+        fftw_execute_dft_c2r(inverse_plan, in, real);
+        ++transforms;
+      }
+
+      void
+      zero(fftw_complex *out)
+      {
+        internal::parallel_for(threads, Nc, [&](std::size_t b, std::size_t e) {
+          std::memset(out + b, 0, (e - b) * sizeof(fftw_complex));
+        });
+      }
+
+      /// out (+)= factor k in, with k a kernel multiplier.
+      void
+      multiply(fftw_complex       *out,
+               const Kernel       &k,
+               const fftw_complex *in,
+               const double        factor,
+               const bool          add)
+      {
+        const double *s = k.s.data();
+        internal::parallel_for(threads, Nc, [&](std::size_t b, std::size_t e) {
+          for (std::size_t j = b; j < e; ++j)
+            {
+              const double f = factor * s[j];
+              // odd: i f (a + i b) = -f b + i f a
+              const double re = k.odd ? -f * in[j][1] : f * in[j][0];
+              const double im = k.odd ? f * in[j][0] : f * in[j][1];
+              if (add)
+                {
+                  out[j][0] += re;
+                  out[j][1] += im;
+                }
+              else
+                {
+                  out[j][0] = re;
+                  out[j][1] = im;
+                }
+            }
+        });
+      }
+
+      /**
+       * One pass over the modes for a sum over a kernel index, in place:
+       * with x_j = h[j] (j < dim) on entry,
+       *
+       *   gsum  = sum_j g_j x_j                       (if gsum),
+       *   h[i] <- kf sum_j K_ij x_j + gf g_i hg       (if K; hg optional),
+       *
+       * K symmetric and even, g odd. One pass instead of dim^2 (the pointwise
+       * work of an evaluation is memory bound).
+       */
+      void
+      fused_product(fftw_complex *const       *h,
+                    const std::vector<Kernel> *K,
+                    const double               kf,
+                    const std::vector<Kernel> *g,
+                    const fftw_complex        *hg,
+                    const double               gf,
+                    fftw_complex              *gsum)
+      {
+        internal::parallel_for(threads, Nc, [&](std::size_t b, std::size_t e) {
+          for (std::size_t m = b; m < e; ++m)
+            {
+              double x[dim][2];
+              for (unsigned int j = 0; j < dim; ++j)
+                {
+                  x[j][0] = h[j][m][0];
+                  x[j][1] = h[j][m][1];
+                }
+              if (gsum != nullptr)
+                {
+                  // i t (a + i b) = -t b + i t a
+                  double re = 0., im = 0.;
+                  for (unsigned int j = 0; j < dim; ++j)
+                    {
+                      const double t = (*g)[j].s[m];
+                      re -= t * x[j][1];
+                      im += t * x[j][0];
+                    }
+                  gsum[m][0] = re;
+                  gsum[m][1] = im;
+                }
+              if (K == nullptr)
+                continue;
+              for (unsigned int i = 0; i < dim; ++i)
+                {
+                  double re = 0., im = 0.;
+                  for (unsigned int j = 0; j < dim; ++j)
+                    {
+                      const double k =
+                        (*K)[internal::symmetric_index<dim>(i, j)].s[m];
+                      re += k * x[j][0];
+                      im += k * x[j][1];
+                    }
+                  re *= kf;
+                  im *= kf;
+                  if (hg != nullptr)
+                    {
+                      const double t = gf * (*g)[i].s[m];
+                      re -= t * hg[m][1];
+                      im += t * hg[m][0];
+                    }
+                  h[i][m][0] = re;
+                  h[i][m][1] = im;
+                }
+            }
+        });
+      }
+
+      /// The spectrum of a kernel sampled on the horizon's bonds, times
+      /// @p scale.
+      template <typename F>
+      Kernel
+      make_kernel(const F &value, const bool odd, const double scale);
+
+      /// The kernels of the model (and the influence counts for damage).
+      void
+      make_kernels();
+
+      /// [k_s beta_field] for the symmetric kernels @p K into @p out, with
+      /// the spectrum @p b of the field.
+      void
+      correlate_symmetric(const std::vector<Kernel>        &K,
+                          const fftw_complex               *b,
+                          std::vector<std::vector<double>> &out);
+
+      /// Q(x) = sum' beta' K_ij eta_i eta_j Delta V (no outer beta), with
+      /// KB_s = [K_s beta].
+      void
+      quadratic_form(const std::vector<double>              &u,
+                     const std::vector<Kernel>              &K,
+                     const std::vector<std::vector<double>> &KB,
+                     std::vector<double>                    &Q);
+
+      void
+      apply_linear(const std::vector<double> &u, std::vector<double> &L);
+
+      void
+      apply_nonlinear(const std::vector<double> &u, std::vector<double> &L);
+
+      void
+      apply_lps(const std::vector<double> &u, std::vector<double> &L);
+
+      /// theta of LPS; leaves Sum_j K_ij^ (beta u_j)^ in spectra 0..dim-1
+      /// when @p keep_sums.
+      void
+      lps_dilatation(const std::vector<double> &u, bool keep_sums);
+
+      Grid<dim> const                grid;
+      Material const                 material;
+      unsigned int const             threads;
+      std::size_t                    N = 0, Nc = 0;
+      double                         dV = 0.;
+      std::vector<Offset<dim>> const offsets;
+      fftw_plan                      forward_plan = nullptr;
+      fftw_plan                      inverse_plan = nullptr;
+      double                        *real         = nullptr;
+      std::vector<fftw_complex *>    spectra;
+      std::size_t                    transforms = 0;
+
+      // kernels: C (bond based, symmetric), a and c (nonlinear), K and g
+      // (LPS), the influence indicator omega_0 (damage, made when asked)
+      std::vector<Kernel> C, a, K, g;
+      Kernel              c, omega0;
+
+      // mask fields: beta = chi_B lambda, chi_B; P_s = [C_s beta] (bond
+      // based) or (1/m) [K_s beta] + [K_s (beta/m)] (LPS); q_i = [a_i beta],
+      // p = [c beta]; LPS: m, 1/m (0 outside), gb_i = [g_i beta], theta.
+      std::vector<double>              beta, body;
+      std::vector<std::vector<double>> P, q, gb;
+      std::vector<double>              p, m, minv, theta;
+      double                           A = 0., B = 0.;
+    };
+  } // namespace FFT
+} // namespace pdfem
+
+#endif
