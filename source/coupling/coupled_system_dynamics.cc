@@ -379,13 +379,19 @@ namespace pdfem
       DynamicData                         &d = data(s.dynamics);
       const TrilinosWrappers::MPI::Vector &f_ext =
         d.f_ext_ready ? d.f_ext : s.f_ext;
+      // Raw arrays at the owned-local indices: looking up every global
+      // index took 0.15 ms of a 1.7 ms explicit step on plateCrack FC2 (a
+      // history row per step).
+      const double *fi = s.f_int.begin();
+      const double *fe = f_ext.begin();
       for (std::size_t set = 0; set < s.set_names.size(); ++set)
         {
           Tensor<1, dim> R;
           for (const unsigned int k : s.set_nodes[set])
-            if (s.owned.is_element(s.node_dof[k][0]))
+            if (const auto &lid = s.owned_lid[k];
+                lid[0] != numbers::invalid_unsigned_int)
               for (unsigned int c = 0; c < dim; ++c)
-                R[c] += s.f_int[s.node_dof[k][c]] - f_ext[s.node_dof[k][c]];
+                R[c] += fi[lid[c]] - fe[lid[c]];
           s.last_reactions[set] = thickness() * Utilities::MPI::sum(R, s.comm);
         }
     }

@@ -154,20 +154,21 @@ namespace pdfem
       const Impl       &s = *impl;
       ForceBalance<dim> balance;
       double            applied = 0., reacted = 0.;
+      // Raw arrays at owned-local indices (a global-index lookup per DoF
+      // was 3 % of an explicit run that writes this every step).
+      const double *fi = s.f_int.begin();
+      const double *fe = s.f_ext.begin();
       for (const unsigned int k : s.owned_nodes)
         for (unsigned int c = 0; c < dim; ++c)
           {
-            const auto   i     = s.node_dof[k][c];
-            const double f_int = s.f_int[i], f_ext = s.f_ext[i];
+            const auto   i     = s.owned_lid[k][c];
+            const double f_int = fi[i], f_ext = fe[i];
             balance.internal_resultant[c] += f_int;
             balance.external_resultant[c] += f_ext;
             applied += std::abs(f_ext);
           }
       for (const unsigned int lid : s.held_lid)
-        {
-          const auto i = s.owned.nth_index_in_set(lid);
-          reacted += std::abs(s.f_int[i] - s.f_ext[i]);
-        }
+        reacted += std::abs(fi[lid] - fe[lid]);
       balance.internal_resultant =
         Utilities::MPI::sum(balance.internal_resultant, s.comm);
       balance.external_resultant =

@@ -2,6 +2,7 @@
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
 #include <pdfem/base/state_archive.h>
+#include <pdfem/base/thread_team.h>
 #include <pdfem/fracture/automatic_region.h>
 #include <pdfem/fracture/crack_growth.h>
 #include <pdfem/pd/families.h>
@@ -13,6 +14,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -426,29 +428,51 @@ namespace pdfem
       for (std::size_t k = 0; k < n_nodes; ++k)
         half_bound[k] = 0.5 * eigenvalues(results.stress[k])[0] +
                         1e-12 * results.stress[k].norm();
-      std::vector<Candidate> mine;
-      double                 largest   = 0.;
-      double                 threshold = std::min(largest, strength);
-      const PD::Families    &f         = system.families();
-      for (std::size_t o = 0; o < f.owners.size(); ++o)
-        {
-          const unsigned int k = f.owners[o];
-          for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
+      // The families in chunks on the threads (ThreadTeam::shared()), each
+      // member with its own largest stress and candidates: the skip test is
+      // safe in any order, and the candidates are sorted below, so the
+      // result does not depend on the threads (plateCrack explicit FC2:
+      // this loop after every step).
+      const PD::Families                 &f        = system.families();
+      const std::size_t                   n_owners = f.owners.size();
+      constexpr std::size_t               chunk    = 512;
+      ThreadTeam                         &team     = ThreadTeam::shared();
+      std::vector<std::vector<Candidate>> found(team.size());
+      std::vector<double>                 member_largest(team.size(), 0.);
+      std::atomic<std::size_t>            next{0};
+      team.run([&](const unsigned int member) {
+        std::vector<Candidate> &mine      = found[member];
+        double                 &largest   = member_largest[member];
+        double                  threshold = std::min(largest, strength);
+        for (std::size_t first = chunk * next++; first < n_owners;
+             first             = chunk * next++)
+          for (std::size_t o = first; o < std::min(first + chunk, n_owners);
+               ++o)
             {
-              const unsigned int m = f.members[b];
-              if (!f.intact[b] || half_bound[k] + half_bound[m] <= threshold)
-                continue;
-              const double s1 =
-                eigenvalues(0.5 * (results.stress[k] + results.stress[m]))[0];
-              if (s1 > largest)
+                          const unsigned int k = f.owners[o];
+                          for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
                 {
-                  largest   = s1;
-                  threshold = std::min(largest, strength);
+                              const unsigned int m = f.members[b];
+                              if (!f.intact[b] ||
+                      half_bound[k] + half_bound[m] <= threshold)
+                    continue;
+                  const double s1 = eigenvalues(
+                    0.5 * (results.stress[k] + results.stress[m]))[0];
+                              if (s1 > largest)
+                    {
+                                  largest   = s1;
+                                  threshold = std::min(largest, strength);
+                    }
+                  if (s1 > strength)
+                    mine.push_back({s1, std::min(k, m), std::max(k, m)});
                 }
-              if (s1 > strength)
-                mine.push_back({s1, std::min(k, m), std::max(k, m)});
             }
-        }
+      });
+      double largest =
+        *std::max_element(member_largest.begin(), member_largest.end());
+      std::vector<Candidate> mine = std::move(found[0]);
+      for (std::size_t i = 1; i < found.size(); ++i)
+        mine.insert(mine.end(), found[i].begin(), found[i].end());
       largest               = Utilities::MPI::max(largest, comm);
       a.max_driving_value   = largest;
       a.critical_load_ratio = largest > 0. ?
