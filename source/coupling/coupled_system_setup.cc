@@ -503,8 +503,9 @@ namespace pdfem
       unsigned long n_decoupled = 0;
       for (const std::uint8_t d : s.decoupled)
         n_decoupled += d;
-      p.n_decoupled_nodes = Utilities::MPI::sum(n_decoupled, s.comm);
-      p.n_matrix_entries  = s.n_matrix_entries;
+      p.n_decoupled_nodes   = Utilities::MPI::sum(n_decoupled, s.comm);
+      p.n_matrix_entries    = s.n_matrix_entries;
+      p.n_fe_matrix_entries = s.fe_matrix.n_nonzero_elements();
       return p;
     }
 

@@ -63,6 +63,7 @@ namespace pdfem
       json.value("decoupled_nodes", final_size.n_decoupled_nodes);
       json.value("pd_boundary_faces", size.n_pd_boundary_faces);
       json.value("matrix_entries_rank0", size.n_matrix_entries);
+      json.value("fe_matrix_entries", size.n_fe_matrix_entries);
       json.end_object();
     }
 

@@ -170,6 +170,9 @@ namespace pdfem
       unsigned long n_decoupled_nodes   = 0;
       unsigned long n_pd_boundary_faces = 0;
       unsigned long n_matrix_entries    = 0;
+      /// Entries of the FE cells' stiffness matrix (all ranks): what the
+      /// FE part of every internal force streams.
+      unsigned long n_fe_matrix_entries = 0;
     };
 
     /**
