@@ -106,8 +106,10 @@ namespace pdfem
       const std::function<void()>         &fe_product) const
     {
       // The model's rows, chunk by chunk on the threads; decoupled owners
-      // (held) get none.
+      // (held) get none. A model that evaluates all owners at once does it
+      // in prepare_forces(), before the chunks.
       const PDModels::NodalField<dim> field = nodal_field(x);
+      model->prepare_forces(field);
       if (layout.family_elements)
         {
           // Family o's forces at pd_force[dim (o + offsets[o]) ..]: its

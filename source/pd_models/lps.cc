@@ -76,25 +76,13 @@ namespace pdfem
     void
     LPS<dim>::initialize(const Region<dim> &r)
     {
-      this->region = r;
-      // kappa (3D) or the planar kappa' = lambda + mu (2D; lambda is
-      // lambda* in plane stress), and A, B of the force state (eq. 32).
-      bulk_modulus = dim == 3 ? r.lambda + 2. * r.mu / 3. : r.lambda + r.mu;
-      A            = dim == 3 ? 3. * bulk_modulus - 5. * r.mu :
-                                2. * bulk_modulus - 4. * r.mu;
-      B            = dim == 3 ? 15. * r.mu : 8. * r.mu;
-      if (!(r.mu > 0.) || !(bulk_modulus > 0.))
-        throw InputError(r.source_file,
-                         "Material/Poisson's ratio",
-                         "the LPS model needs a positive shear and bulk "
-                         "modulus; mu = " +
-                           number(r.mu) + ", kappa = " + number(bulk_modulus),
-                         "E > 0 and -1 < nu < 1/2");
+      this->region          = r;
+      const LpsConstants c  = lps_constants(r);
+      bulk_modulus          = c.bulk_modulus;
+      A                     = c.A;
+      B                     = c.B;
+      delta                 = c.delta;
       const PD::Families &f = *r.families;
-      double              h = 0.;
-      for (const unsigned int k : f.owners)
-        h = std::max(h, (*r.horizon)[k]);
-      delta = Utilities::MPI::max(h, r.comm);
       pairwise_bond_volumes(r, uniform_volumes, bond_volume, pd_share);
       const auto &x = *r.position;
       bond_weight.assign(f.n_bonds(), 0.);
@@ -261,7 +249,32 @@ namespace pdfem
               {"B", B}};
     }
 
-#define INSTANTIATE(dim) template class LPS<dim>;
+    template <int dim>
+    LpsConstants
+    lps_constants(const Region<dim> &r)
+    {
+      LpsConstants c;
+      c.bulk_modulus = dim == 3 ? r.lambda + 2. * r.mu / 3. : r.lambda + r.mu;
+      c.A            = dim == 3 ? 3. * c.bulk_modulus - 5. * r.mu :
+                                  2. * c.bulk_modulus - 4. * r.mu;
+      c.B            = dim == 3 ? 15. * r.mu : 8. * r.mu;
+      if (!(r.mu > 0.) || !(c.bulk_modulus > 0.))
+        throw InputError(r.source_file,
+                         "Material/Poisson's ratio",
+                         "the LPS model needs a positive shear and bulk "
+                         "modulus; mu = " +
+                           number(r.mu) + ", kappa = " + number(c.bulk_modulus),
+                         "E > 0 and -1 < nu < 1/2");
+      double h = 0.;
+      for (const unsigned int k : r.families->owners)
+        h = std::max(h, (*r.horizon)[k]);
+      c.delta = Utilities::MPI::max(h, r.comm);
+      return c;
+    }
+
+#define INSTANTIATE(dim)   \
+  template class LPS<dim>; \
+  template LpsConstants lps_constants<dim>(const Region<dim> &);
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace PDModels

@@ -165,7 +165,8 @@ namespace pdfem
      *
      * Threads: forces(), tangent_row() and displacement_gradient() are
      * called concurrently for disjoint owners (they must be const and
-     * write only their arguments).
+     * write only their arguments); prepare_forces() runs before them,
+     * alone.
      */
     template <int dim>
     class Interface
@@ -227,6 +228,19 @@ namespace pdfem
       /// Is the tangent symmetric (the gradient of an energy)?
       virtual bool
       symmetric() const = 0;
+
+      /**
+       * Called once per force evaluation, serially and on every rank
+       * (collective over region.comm), before forces() or family_forces()
+       * are asked for the owner chunks at the same @p u: a model that
+       * evaluates all owners at once (e.g. by FFT on a grid, "lps fft")
+       * does it here, and forces() hands out its rows. By default nothing.
+       */
+      virtual void
+      prepare_forces(const NodalField<dim> &u)
+      {
+        (void)u;
+      }
 
       /**
        * Row models (the default layout) override forces() and

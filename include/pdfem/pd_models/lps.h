@@ -153,6 +153,23 @@ namespace pdfem
       /// Per owner: the weighted volume over the intact bonds.
       std::vector<double> m;
     };
+
+    /**
+     * The constants of the LPS force state for the region's moduli
+     * (specs/002 eq. 32): kappa (3D) or the planar kappa' = lambda + mu
+     * (2D, lambda* in plane stress), A = 3 kappa - 5 mu, B = 15 mu (3D);
+     * A = 2 kappa' - 4 mu, B = 8 mu (2D); and the largest horizon over all
+     * ranks. Shared by "lps" and "lps fft"; throws InputError (Material/
+     * Poisson's ratio) unless mu > 0 and kappa > 0. Collective.
+     */
+    struct LpsConstants
+    {
+      double bulk_modulus = 0., A = 0., B = 0., delta = 0.;
+    };
+
+    template <int dim>
+    LpsConstants
+    lps_constants(const Region<dim> &region);
   } // namespace PDModels
 } // namespace pdfem
 

@@ -1,0 +1,183 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef PDFEM_PD_MODELS_LPS_FFT_H
+#define PDFEM_PD_MODELS_LPS_FFT_H
+
+#include <pdfem/pd_models/interface.h>
+
+#include <deal.II/base/tensor.h>
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pdfem
+{
+  namespace FFT
+  {
+    template <int dim>
+    class FftOperator;
+  }
+
+  namespace PDModels
+  {
+    /**
+     * The PD nodes of an all-PD region detected as a uniform grid: n[c]
+     * nodes of spacing[c] from origin[c] in direction c, node k at grid
+     * indices index[k] (x_k = origin + index . spacing to 1e-8 spacing).
+     */
+    template <int dim>
+    struct NodeGrid
+    {
+      std::array<unsigned int, dim>              n{};
+      std::array<double, dim>                    spacing{}, origin{};
+      std::vector<std::array<unsigned int, dim>> index;
+    };
+
+    /**
+     * The grid of @p x: the spacing of each direction is the smallest gap
+     * between distinct coordinates, and every node must lie on it (1e-8
+     * spacing) at its own grid point. Throws InputError naming
+     * `Peridynamics/Model` and @p file otherwise.
+     */
+    template <int dim>
+    NodeGrid<dim>
+    detect_node_grid(const std::vector<dealii::Point<dim>> &x,
+                     const std::string                     &file);
+
+    /**
+     * The linearised LPS model of "lps" (specs/002 §1.4, eqs. 27-36;
+     * doc/theory.md §15) evaluated for all owners at once by the fast
+     * convolution-based method ("lps fft"; FFT::FftOperator with
+     * FFT::Model::lps, specs/002 §2, doc/theory.md §14): the same forces as
+     * `Model = lps` with `LPS/Nodal volumes = uniform`, to round-off,
+     *
+     *   F_k = -Delta V L(x_k),
+     *
+     * L the LPS force density of FFT::Operator (specs/002 eq. 36 with the
+     * variable weighted volume, the "fully consistent variant" of §1.4)
+     * and Delta V = h^dim (h the region's spacing).
+     *
+     * For an all-PD region whose nodes lie on a uniform grid (a structured
+     * mesh of equal cells): the grid is detected from the node positions
+     * (detect_node_grid()), and the body is embedded in a periodic box with
+     * a gap of more than a horizon on every side (specs/002 §2.5), its mask
+     * chi_B = 1 at the nodes (any shape; grid points without a node are
+     * outside). The box size in each direction is the smallest product of
+     * 2, 3, 5, 7 that leaves the gap.
+     *
+     * A row model (Layout::family_elements false): prepare_forces()
+     * evaluates L for every grid point once per state (one FFT operator
+     * application, FFTW threads = the thread team's size), and forces()
+     * hands each owner chunk its rows. With several ranks, the owners'
+     * displacements are summed into the grid on every rank (one allreduce)
+     * and every rank evaluates the whole grid.
+     *
+     * Limits (InputError naming `Peridynamics/Model`): no FE cells; no
+     * broken bonds (pre-existing cracks, bond-breaking criteria: the FFT
+     * form knows node masks only, not single bonds); no tangent (explicit
+     * dynamics only: Driver/Type = explicit); LPS/Nodal volumes = uniform
+     * (every node carries Delta V).
+     */
+    template <int dim>
+    class LpsFft : public Interface<dim>
+    {
+    public:
+      LpsFft();
+      ~LpsFft() override;
+
+      void
+      parse_parameters(dealii::ParameterHandler &prm,
+                       const std::string        &file) override;
+
+      Layout
+      layout() const override;
+
+      /// Detects the grid, checks that every family has the bonds of the
+      /// grid's discrete horizon, makes the FFT operator and its masks.
+      void
+      initialize(const Region<dim> &region) override;
+
+      /// Refused (InputError): the FFT form has no single broken bonds.
+      void
+      bonds_changed(const std::vector<std::size_t> &changed,
+                    bool                            free_surfaces) override;
+
+      bool
+      linear() const override
+      {
+        return true;
+      }
+
+      bool
+      symmetric() const override
+      {
+        return true;
+      }
+
+      /// L of every grid point at @p u (the owners' displacements).
+      void
+      prepare_forces(const NodalField<dim> &u) override;
+
+      /// The rows of the last prepare_forces(): f = -Delta V L(x_k).
+      void
+      forces(std::size_t            begin,
+             std::size_t            end,
+             const NodalField<dim> &u,
+             double                *f) const override;
+
+      /// Refused (InputError): no tangent, explicit dynamics only.
+      void
+      tangent_row(std::size_t                          o,
+                  const NodalField<dim>               &u,
+                  std::vector<dealii::Tensor<2, dim>> &blocks) const override;
+
+      /// As "lps": the fit of the bonds with the weights omega V_j.
+      dealii::Tensor<2, dim>
+      displacement_gradient(std::size_t            o,
+                            const NodalField<dim> &u) const override;
+
+      double
+      nodal_volume(unsigned int k) const override;
+
+      /// As "lps", and the FFT box: its nodes, and the operator's bytes
+      /// per box node and per body node.
+      std::vector<std::pair<std::string, double>>
+      constants() const override;
+
+      /// The detected grid of the body's nodes.
+      const NodeGrid<dim> &
+      node_grid() const
+      {
+        return body_grid;
+      }
+
+      /// The nodes of the periodic box in each direction.
+      const std::array<unsigned int, dim> &
+      box_size() const
+      {
+        return box;
+      }
+
+    private:
+      std::string source_file;
+      bool        inverse_distance = true;
+      double      dirichlet_layer  = 1.;
+      double      delta = 0., A = 0., B = 0., bulk_modulus = 0.;
+      double      node_volume = 0.;
+
+      NodeGrid<dim>                 body_grid;
+      std::array<unsigned int, dim> box{};
+      std::size_t                   n_box = 0;
+      /// Per owner: its grid point in the box.
+      std::vector<std::size_t> box_node;
+      /// The grid displacement (dim N_box, component-major) and L.
+      std::vector<double>                    u_box, L_box;
+      std::unique_ptr<FFT::FftOperator<dim>> op;
+    };
+  } // namespace PDModels
+} // namespace pdfem
+
+#endif

@@ -1,0 +1,463 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The PD model "lps fft": the LPS model of "lps" evaluated for all owners
+// at once by FFT on the uniform grid of an all-PD region (doc/theory.md
+// §14-15, doc/user_guide.md §2a‴).
+#include <pdfem/base/config.h>
+#include <pdfem/base/exceptions.h>
+#include <pdfem/base/thread_team.h>
+#include <pdfem/fft/fft_operator.h>
+#include <pdfem/fft/grid.h>
+#include <pdfem/pd/families.h>
+#include <pdfem/pd_models/interface.h>
+#include <pdfem/pd_models/lps.h>
+#include <pdfem/pd_models/lps_fft.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "pairwise_tools.h"
+
+namespace pdfem
+{
+  namespace PDModels
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /// The entry @p entry of the current subsection; "" where not
+      /// declared.
+      std::string
+      entry_or_empty(ParameterHandler &prm, const std::string &entry)
+      {
+        try
+          {
+            return prm.get(entry);
+          }
+        catch (const ExceptionBase &)
+          {
+            return "";
+          }
+      }
+
+      /// The entry @p entry of the top-level subsection @p section, read
+      /// from inside `subsection Peridynamics`; "" where not declared (a
+      /// model made outside a scene, e.g. in a test).
+      std::string
+      scene_entry(ParameterHandler  &prm,
+                  const std::string &section,
+                  const std::string &entry)
+      {
+        prm.leave_subsection();
+        prm.enter_subsection(section);
+        const std::string value = entry_or_empty(prm, entry);
+        prm.leave_subsection();
+        prm.enter_subsection("Peridynamics");
+        return value;
+      }
+
+      /// The smallest n >= @p at_least whose prime factors are 2, 3, 5, 7
+      /// (sizes FFTW transforms fastest).
+      unsigned int
+      fft_size(const unsigned int at_least)
+      {
+        for (unsigned int n = std::max(1u, at_least);; ++n)
+          {
+            unsigned int r = n;
+            for (const unsigned int p : {2u, 3u, 5u, 7u})
+              while (r % p == 0)
+                r /= p;
+            if (r == 1)
+              return n;
+          }
+      }
+
+      template <int dim>
+      std::string
+      point_text(const Point<dim> &p)
+      {
+        std::ostringstream s;
+        s << '(';
+        for (unsigned int c = 0; c < dim; ++c)
+          s << (c ? ", " : "") << p[c];
+        s << ')';
+        return s.str();
+      }
+    } // namespace
+
+    template <int dim>
+    NodeGrid<dim>
+    detect_node_grid(const std::vector<Point<dim>> &x, const std::string &file)
+    {
+      const std::string allowed =
+        "a structured mesh of equal cells whose nodes form a uniform grid "
+        "(e.g. gmsh transfinite), or Peridynamics/Model = lps";
+      NodeGrid<dim> g;
+      if (x.empty())
+        throw InputError(file, "Peridynamics/Model", "lps fft: no nodes");
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          std::vector<double> v(x.size());
+          for (std::size_t k = 0; k < x.size(); ++k)
+            v[k] = x[k][c];
+          std::sort(v.begin(), v.end());
+          const double extent = v.back() - v.front();
+          double       gap    = extent;
+          for (std::size_t k = 1; k < v.size(); ++k)
+            if (v[k] - v[k - 1] > 1e-10 * extent)
+              gap = std::min(gap, v[k] - v[k - 1]);
+          if (!(extent > 0.))
+            throw InputError(file,
+                             "Peridynamics/Model",
+                             "lps fft: the nodes span no length in direction " +
+                               std::to_string(c),
+                             allowed);
+          g.n[c] = static_cast<unsigned int>(std::lround(extent / gap)) + 1;
+          g.spacing[c] = extent / (g.n[c] - 1);
+          g.origin[c]  = v.front();
+        }
+      // Every node on the grid first (a jittered mesh has tiny gaps, so a
+      // huge grid), then one node per grid point.
+      g.index.resize(x.size());
+      for (std::size_t k = 0; k < x.size(); ++k)
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            const double s = (x[k][c] - g.origin[c]) / g.spacing[c];
+            const long   i = std::lround(s);
+            if (std::abs(s - i) > 1e-8)
+              throw InputError(file,
+                               "Peridynamics/Model",
+                               "lps fft needs the PD nodes on a uniform grid; "
+                               "node " +
+                                 std::to_string(k) + " at " + point_text(x[k]) +
+                                 " is off the grid of spacing " +
+                                 number(g.spacing[c]) + " in direction " +
+                                 std::to_string(c),
+                               allowed);
+            g.index[k][c] = static_cast<unsigned int>(i);
+          }
+      double n_points = 1.;
+      for (unsigned int c = 0; c < dim; ++c)
+        n_points *= g.n[c];
+      if (n_points > 64. * double(x.size()))
+        throw InputError(file,
+                         "Peridynamics/Model",
+                         "lps fft: the " + std::to_string(x.size()) +
+                           " nodes fill less than 1/64 of the " +
+                           number(n_points) +
+                           " points of their grid (spacing the smallest gap "
+                           "between node coordinates)",
+                         allowed);
+      std::vector<std::uint8_t> taken(static_cast<std::size_t>(n_points), 0);
+      for (std::size_t k = 0; k < x.size(); ++k)
+        {
+          std::size_t flat = 0;
+          for (unsigned int c = 0; c < dim; ++c)
+            flat = flat * g.n[c] + g.index[k][c];
+          if (taken[flat]++)
+            throw InputError(file,
+                             "Peridynamics/Model",
+                             "lps fft: two nodes at the grid point of node " +
+                               std::to_string(k) + " " + point_text(x[k]),
+                             allowed);
+        }
+      return g;
+    }
+
+    template <int dim>
+    LpsFft<dim>::LpsFft() = default;
+
+    template <int dim>
+    LpsFft<dim>::~LpsFft() = default;
+
+    template <int dim>
+    void
+    LpsFft<dim>::parse_parameters(ParameterHandler  &prm,
+                                  const std::string &file)
+    {
+      // The LPS subsection of "lps" (declared there).
+      source_file = file;
+      prm.enter_subsection("LPS");
+      inverse_distance = prm.get("Influence function") == "1/r";
+      dirichlet_layer  = prm.get_double("Dirichlet layer");
+      const bool cells = prm.get("Nodal volumes") == "cells";
+      prm.leave_subsection();
+      const std::string model = "Peridynamics/Model";
+      if (cells)
+        throw InputError(file,
+                         model,
+                         "lps fft gives every node the grid's volume h^dim, "
+                         "and LPS/Nodal volumes = cells asks for each node's "
+                         "share of its cells",
+                         "LPS/Nodal volumes = uniform with lps fft, or Model "
+                         "= lps");
+      if (!entry_or_empty(prm, "Pre-existing cracks").empty())
+        throw InputError(file,
+                         model,
+                         "lps fft cannot cut single bonds (the FFT form has "
+                         "node masks only), and Peridynamics/Pre-existing "
+                         "cracks cut them",
+                         "no pre-existing cracks with lps fft, or Model = lps");
+      const std::string criterion = scene_entry(prm, "Fracture", "Criterion");
+      if (!criterion.empty() && criterion != "none")
+        throw InputError(file,
+                         model,
+                         "lps fft cannot break single bonds (the FFT form has "
+                         "node masks only), and Fracture/Criterion = " +
+                           criterion + " breaks them",
+                         "Fracture/Criterion = none with lps fft, or Model = "
+                         "lps");
+      const std::string driver = scene_entry(prm, "Driver", "Type");
+      if (!driver.empty() && driver != "explicit")
+        throw InputError(file,
+                         model,
+                         "lps fft evaluates forces only, without a tangent, "
+                         "and Driver/Type = " +
+                           driver + " needs one",
+                         "Driver/Type = explicit with lps fft, or Model = lps");
+    }
+
+    template <int dim>
+    Layout
+    LpsFft<dim>::layout() const
+    {
+      Layout l;
+      l.uniform_horizon  = true;
+      l.dirichlet_layer  = dirichlet_layer;
+      l.nodal_body_force = true;
+      l.free_crack_faces = false;
+      return l;
+    }
+
+    template <int dim>
+    void
+    LpsFft<dim>::initialize(const Region<dim> &r)
+    {
+      this->region            = r;
+      const std::string model = "Peridynamics/Model";
+      const auto       &x     = *r.position;
+      for (std::size_t k = 0; k < x.size(); ++k)
+        if ((*r.has_fe_cells)[k] || !((*r.pd_volume)[k] > 0.))
+          throw InputError(
+            r.source_file,
+            model,
+            "lps fft needs an all-PD region, and node " + std::to_string(k) +
+              " at " + point_text(x[k]) + " belongs to an FE cell",
+            "Mesh/PD regions = all with lps fft, or Model = lps");
+      body_grid          = detect_node_grid(x, r.source_file);
+      double cell_volume = 1.;
+      for (unsigned int c = 0; c < dim; ++c)
+        cell_volume *= body_grid.spacing[c];
+      node_volume = std::pow(r.spacing, dim);
+      if (std::abs(node_volume - cell_volume) > 1e-8 * cell_volume)
+        throw InputError(r.source_file,
+                         model,
+                         "lps fft needs cells of one size, and the largest "
+                         "cell (" +
+                           number(node_volume) +
+                           ") is larger than the grid's (" +
+                           number(cell_volume) + ")",
+                         "a structured mesh of equal cells, or Model = lps");
+
+      // The constants of "lps" (specs/002 eq. 32).
+      const LpsConstants c  = lps_constants(r);
+      bulk_modulus          = c.bulk_modulus;
+      A                     = c.A;
+      B                     = c.B;
+      delta                 = c.delta;
+      const PD::Families &f = *r.families;
+
+      // The box: the body's grid and a gap of more than a horizon after it
+      // in each direction (the periodic images never bond).
+      FFT::Grid<dim> grid;
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          const auto reach = static_cast<unsigned int>(
+            std::floor(delta * (1. + 1e-10) / body_grid.spacing[c]));
+          box[c]          = fft_size(body_grid.n[c] + reach + 1);
+          grid.n[c]       = box[c];
+          grid.spacing[c] = body_grid.spacing[c];
+        }
+      n_box = grid.n_nodes();
+      std::vector<double> body(n_box, 0.);
+      const auto          at = [&](const unsigned int k) {
+        std::array<unsigned int, dim> i;
+        for (unsigned int c = 0; c < dim; ++c)
+          i[c] = body_grid.index[k][c];
+        return grid.node(i);
+      };
+      for (std::size_t k = 0; k < x.size(); ++k)
+        body[at(k)] = 1.;
+      box_node.resize(f.owners.size());
+      for (std::size_t o = 0; o < f.owners.size(); ++o)
+        box_node[o] = at(f.owners[o]);
+
+      // Every family must be the grid's discrete horizon within the body
+      // (the bonds the FFT sums), all intact.
+      const auto offsets    = FFT::horizon_offsets(grid, delta);
+      bool       on_horizon = false;
+      for (const auto &p : offsets)
+        on_horizon = on_horizon || std::abs(p.length - delta) < 1e-8 * delta;
+      for (std::size_t o = 0; o < f.owners.size(); ++o)
+        {
+          const auto &i       = body_grid.index[f.owners[o]];
+          std::size_t n_bonds = 0;
+          for (const auto &p : offsets)
+            {
+              std::array<unsigned int, dim> j;
+              bool                          inside = true;
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  const long jc = long(i[c]) + p.p[c];
+                  inside = inside && jc >= 0 && jc < long(body_grid.n[c]);
+                  j[c]   = static_cast<unsigned int>(std::max(0l, jc));
+                }
+              n_bonds += inside && body[grid.node(j)] > 0.;
+            }
+          std::size_t n_intact = 0;
+          for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
+            n_intact += f.intact[b];
+          if (n_bonds != f.offsets[o + 1] - f.offsets[o] || n_intact != n_bonds)
+            throw InputError(
+              r.source_file,
+              model,
+              "lps fft: the family of node " + std::to_string(f.owners[o]) +
+                " at " + point_text(x[f.owners[o]]) + " has " +
+                std::to_string(n_intact) +
+                " intact bonds, the grid's horizon " + std::to_string(n_bonds),
+              std::string(on_horizon ? "a horizon factor off whole "
+                                       "spacings (e.g. 3.015: bonds of "
+                                       "exactly a horizon hang on the "
+                                       "mesh's round-off), " :
+                                       "") +
+                "a uniform grid without cut bonds, or Model "
+                "= lps");
+        }
+
+      FFT::Material material;
+      material.model         = FFT::Model::lps;
+      material.horizon       = delta;
+      material.bulk_modulus  = bulk_modulus;
+      material.shear_modulus = r.mu;
+      if (!inverse_distance)
+        material.influence = [](double) { return 1.; };
+      FFT::FftOptions options;
+      options.threads = ThreadTeam::shared().size();
+      op = std::make_unique<FFT::FftOperator<dim>>(grid, material, options);
+      op->set_masks(body, {});
+      u_box.assign(dim * n_box, 0.);
+    }
+
+    template <int dim>
+    void
+    LpsFft<dim>::bonds_changed(const std::vector<std::size_t> &changed, bool)
+    {
+      if (!changed.empty())
+        throw InputError(source_file,
+                         "Peridynamics/Model",
+                         "lps fft cannot break single bonds (the FFT form has "
+                         "node masks only)",
+                         "no bond-breaking with lps fft, or Model = lps");
+    }
+
+    template <int dim>
+    void
+    LpsFft<dim>::prepare_forces(const NodalField<dim> &u)
+    {
+      const PD::Families &f = *this->region.families;
+      const bool          parallel =
+        Utilities::MPI::n_mpi_processes(this->region.comm) > 1;
+      if (parallel)
+        std::fill(u_box.begin(), u_box.end(), 0.);
+      for (std::size_t o = 0; o < f.owners.size(); ++o)
+        for (unsigned int c = 0; c < dim; ++c)
+          u_box[c * n_box + box_node[o]] = u(f.owners[o], c);
+      if (parallel)
+        Utilities::MPI::sum(u_box, this->region.comm, u_box);
+      op->apply(u_box, L_box);
+    }
+
+    template <int dim>
+    void
+    LpsFft<dim>::forces(const std::size_t begin,
+                        const std::size_t end,
+                        const NodalField<dim> &,
+                        double *f) const
+    {
+      for (std::size_t o = begin; o < end; ++o)
+        for (unsigned int c = 0; c < dim; ++c)
+          f[dim * o + c] = -node_volume * L_box[c * n_box + box_node[o]];
+    }
+
+    template <int dim>
+    void
+    LpsFft<dim>::tangent_row(std::size_t,
+                             const NodalField<dim> &,
+                             std::vector<Tensor<2, dim>> &) const
+    {
+      throw InputError(source_file,
+                       "Peridynamics/Model",
+                       "lps fft evaluates forces only, without a tangent, "
+                       "which this run needs",
+                       "Driver/Type = explicit with lps fft, or Model = lps");
+    }
+
+    template <int dim>
+    Tensor<2, dim>
+    LpsFft<dim>::displacement_gradient(const std::size_t      o,
+                                       const NodalField<dim> &u) const
+    {
+      const PD::Families &f = *this->region.families;
+      const auto         &x = *this->region.position;
+      const unsigned int  k = f.owners[o];
+      return fitted_gradient(this->region, o, u, [&](const std::size_t j) {
+        const double L = (x[f.members[j]] - x[k]).norm();
+        return (inverse_distance ? 1. / L : 1.) * L * L;
+      });
+    }
+
+    template <int dim>
+    double
+    LpsFft<dim>::nodal_volume(const unsigned int) const
+    {
+      return node_volume;
+    }
+
+    template <int dim>
+    std::vector<std::pair<std::string, double>>
+    LpsFft<dim>::constants() const
+    {
+      const double bytes = op->bytes_per_node();
+      return {{"horizon", delta},
+              {"spacing", this->region.spacing},
+              {dim == 3 ? "bulk modulus" : "planar bulk modulus", bulk_modulus},
+              {"shear modulus", this->region.mu},
+              {"A", A},
+              {"B", B},
+              {"fft box nodes", double(n_box)},
+              {"fft bytes per box node", bytes},
+              {"fft bytes per body node",
+               bytes * double(n_box) / double(this->region.position->size())}};
+    }
+
+#define INSTANTIATE(dim)                                                   \
+  template class LpsFft<dim>;                                              \
+  template NodeGrid<dim> detect_node_grid(const std::vector<Point<dim>> &, \
+                                          const std::string &);
+    PDFEM_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace PDModels
+} // namespace pdfem
+
+PDFEM_REGISTER_PD_MODEL(
+  pdfem::PDModels::LpsFft,
+  "lps fft",
+  "the LPS model of lps with LPS/Nodal volumes = uniform, evaluated for all "
+  "nodes at once by FFT (specs/002 §2): all-PD regions on a uniform grid, "
+  "explicit dynamics, no broken bonds",
+  {})
