@@ -4,6 +4,7 @@
 // §14-15, doc/user_guide.md §2a‴).
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/state_archive.h>
 #include <pdfem/base/thread_team.h>
 #include <pdfem/fft/fft_operator.h>
 #include <pdfem/fft/grid.h>
@@ -15,6 +16,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/patterns.h>
 
 #include <algorithm>
 #include <cmath>
@@ -75,6 +77,36 @@ namespace pdfem
             if (r == 1)
               return n;
           }
+      }
+
+      /// `subsection LPS fft` inside `subsection Peridynamics`: the damage
+      /// of the energy criterion (the LPS constants are those of "lps").
+      void
+      declare_lps_fft_parameters(ParameterHandler &prm)
+      {
+        prm.enter_subsection("LPS fft");
+        prm.declare_entry(
+          "Damage",
+          "none",
+          Patterns::Selection("none|energy"),
+          "none: nodes never fail; energy: the pointwise energy criterion of "
+          "specs/002 §1.6: after every time step a node whose strain energy "
+          "density W (the paper's convention, twice the physical one) "
+          "exceeds W_c = G_0 / delta fails for good and loses all its "
+          "bonds (explicit dynamics).");
+        prm.declare_entry("Fracture energy",
+                          "0",
+                          Patterns::Double(),
+                          "G_0 [J/m^2] of Damage = energy (> 0).");
+        prm.declare_entry(
+          "Damage index",
+          "body",
+          Patterns::Selection("body|full horizon"),
+          "The damage in the output, d = 1 - lambda sum lambda' / D (specs/002 "
+          "eq. 65): body: D the node's neighbours in the body (0 in an "
+          "intact body, PeriFast); full horizon: D the whole discrete "
+          "horizon (the paper; surface nodes start above 0).");
+        prm.leave_subsection();
       }
 
       template <int dim>
@@ -187,6 +219,20 @@ namespace pdfem
       dirichlet_layer  = prm.get_double("Dirichlet layer");
       const bool cells = prm.get("Nodal volumes") == "cells";
       prm.leave_subsection();
+      prm.enter_subsection("LPS fft");
+      damage_on       = prm.get("Damage") == "energy";
+      fracture_energy = prm.get_double("Fracture energy");
+      normalisation   = prm.get("Damage index") == "body" ?
+                          FFT::DamageNormalisation::body :
+                          FFT::DamageNormalisation::full_horizon;
+      prm.leave_subsection();
+      if (damage_on && !(fracture_energy > 0.))
+        throw InputError(file,
+                         "Peridynamics/LPS fft/Fracture energy",
+                         "G_0 = " + number(fracture_energy) +
+                           " is not positive, and Damage = energy needs "
+                           "W_c = G_0 / delta",
+                         "G_0 > 0 [J/m^2] with Damage = energy");
       const std::string model = "Peridynamics/Model";
       if (cells)
         throw InputError(file,
@@ -210,9 +256,17 @@ namespace pdfem
                          "lps fft cannot break single bonds (the FFT form has "
                          "node masks only), and Fracture/Criterion = " +
                            criterion + " breaks them",
-                         "Fracture/Criterion = none with lps fft, or Model = "
-                         "lps");
+                         "Fracture/Criterion = none with lps fft (its own "
+                         "nodal energy criterion: LPS fft/Damage = energy), "
+                         "or Model = lps");
       const std::string driver = scene_entry(prm, "Driver", "Type");
+      if (damage_on && !driver.empty() && driver != "explicit")
+        throw InputError(file,
+                         "Peridynamics/LPS fft/Damage",
+                         "the energy criterion fails nodes after time steps "
+                         "of explicit dynamics, and Driver/Type = " +
+                           driver + " has none",
+                         "Damage = none, or Driver/Type = explicit");
       if (!driver.empty() && driver != "explicit")
         throw InputError(file,
                          model,
@@ -231,6 +285,7 @@ namespace pdfem
       l.dirichlet_layer  = dirichlet_layer;
       l.nodal_body_force = true;
       l.free_crack_faces = false;
+      l.history          = damage_on;
       return l;
     }
 
@@ -284,8 +339,8 @@ namespace pdfem
           grid.spacing[c] = body_grid.spacing[c];
         }
       n_box = grid.n_nodes();
-      std::vector<double> body(n_box, 0.);
-      const auto          at = [&](const unsigned int k) {
+      body.assign(n_box, 0.);
+      const auto at = [&](const unsigned int k) {
         std::array<unsigned int, dim> i;
         for (unsigned int c = 0; c < dim; ++c)
           i[c] = body_grid.index[k][c];
@@ -349,8 +404,16 @@ namespace pdfem
       FFT::FftOptions options;
       options.threads = ThreadTeam::shared().size();
       op = std::make_unique<FFT::FftOperator<dim>>(grid, material, options);
-      op->set_masks(body, {});
+      lambda.assign(n_box, 1.);
+      op->set_masks(body, lambda);
+      op->damage(d_box, normalisation);
       u_box.assign(dim * n_box, 0.);
+      W_box.clear();
+      // The paper's calibration (specs/002 eqs. 50-51): a delta-thick layer
+      // of dead nodes releases A delta W_c = A G_0.
+      W_c =
+        damage_on ? FFT::critical_energy_density(fracture_energy, delta) : 0.;
+      n_last_failed = 0;
     }
 
     template <int dim>
@@ -367,7 +430,7 @@ namespace pdfem
 
     template <int dim>
     void
-    LpsFft<dim>::prepare_forces(const NodalField<dim> &u)
+    LpsFft<dim>::gather(const NodalField<dim> &u)
     {
       const PD::Families &f = *this->region.families;
       const bool          parallel =
@@ -379,7 +442,65 @@ namespace pdfem
           u_box[c * n_box + box_node[o]] = u(f.owners[o], c);
       if (parallel)
         Utilities::MPI::sum(u_box, this->region.comm, u_box);
+    }
+
+    template <int dim>
+    void
+    LpsFft<dim>::prepare_forces(const NodalField<dim> &u)
+    {
+      gather(u);
       op->apply(u_box, L_box);
+    }
+
+    template <int dim>
+    void
+    LpsFft<dim>::commit_state(const NodalField<dim> &u)
+    {
+      n_last_failed = 0;
+      if (!damage_on)
+        return;
+      // specs/002 eqs. 43, 63: lambda = 0 where W > W_c, irreversible; the
+      // forces of the next step use the new masks (one-step lag). Every
+      // rank holds the whole grid: the same lambda everywhere.
+      gather(u);
+      op->energy_density(u_box, W_box);
+      n_last_failed = FFT::update_integrity(W_box, W_c, lambda);
+      if (n_last_failed > 0)
+        {
+          op->set_masks(body, lambda);
+          op->damage(d_box, normalisation);
+        }
+    }
+
+    template <int dim>
+    double
+    LpsFft<dim>::damage(const std::size_t o, const NodalField<dim> &) const
+    {
+      return d_box[box_node[o]];
+    }
+
+    template <int dim>
+    void
+    LpsFft<dim>::save_state(StateArchive &state) const
+    {
+      state.put("pd model/integrity", lambda);
+    }
+
+    template <int dim>
+    void
+    LpsFft<dim>::restore_state(const StateArchive &state)
+    {
+      const auto saved = state.get_vector<double>("pd model/integrity");
+      if (saved.size() != lambda.size())
+        throw InputError("",
+                         "--restart",
+                         "the checkpoint's node integrity has " +
+                           std::to_string(saved.size()) +
+                           " box nodes, this run's FFT box " +
+                           std::to_string(lambda.size()));
+      lambda = saved;
+      op->set_masks(body, lambda);
+      op->damage(d_box, normalisation);
     }
 
     template <int dim>
@@ -429,20 +550,58 @@ namespace pdfem
     }
 
     template <int dim>
+    FailedNodes<dim>
+    LpsFft<dim>::failed_nodes() const
+    {
+      FailedNodes<dim>               e;
+      const std::vector<Point<dim>> &x = *this->region.position;
+      for (std::size_t k = 0; k < x.size(); ++k)
+        {
+          if (lambda[op->grid().node(body_grid.index[k])] > 0.)
+            continue;
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              e.lo[c] = e.n ? std::min(e.lo[c], x[k][c]) : x[k][c];
+              e.hi[c] = e.n ? std::max(e.hi[c], x[k][c]) : x[k][c];
+            }
+          ++e.n;
+        }
+      return e;
+    }
+
+    template <int dim>
     std::vector<std::pair<std::string, double>>
     LpsFft<dim>::constants() const
     {
-      const double bytes = op->bytes_per_node();
-      return {{"horizon", delta},
-              {"spacing", this->region.spacing},
-              {dim == 3 ? "bulk modulus" : "planar bulk modulus", bulk_modulus},
-              {"shear modulus", this->region.mu},
-              {"A", A},
-              {"B", B},
-              {"fft box nodes", double(n_box)},
-              {"fft bytes per box node", bytes},
-              {"fft bytes per body node",
-               bytes * double(n_box) / double(this->region.position->size())}};
+      const double                                bytes = op->bytes_per_node();
+      std::vector<std::pair<std::string, double>> failed;
+      if (damage_on)
+        {
+          const FailedNodes<dim>    extent = failed_nodes();
+          const std::array<char, 3> axis   = {{'x', 'y', 'z'}};
+          failed.emplace_back("failed nodes", double(extent.n));
+          for (unsigned int c = 0; c < dim && extent.n > 0; ++c)
+            {
+              failed.emplace_back(std::string("failed nodes min ") + axis[c],
+                                  extent.lo[c]);
+              failed.emplace_back(std::string("failed nodes max ") + axis[c],
+                                  extent.hi[c]);
+            }
+        }
+      std::vector<std::pair<std::string, double>> all = {
+        {"horizon", delta},
+        {"spacing", this->region.spacing},
+        {dim == 3 ? "bulk modulus" : "planar bulk modulus", bulk_modulus},
+        {"shear modulus", this->region.mu},
+        {"A", A},
+        {"B", B},
+        {"fft box nodes", double(n_box)},
+        {"critical energy density", W_c},
+        {"fft bytes per box node", bytes},
+        {"fft bytes per body node",
+         bytes * double(n_box) / double(this->region.position->size())}};
+      all.insert(all.end(), failed.begin(), failed.end());
+      return all;
     }
 
 #define INSTANTIATE(dim)                                                   \
@@ -459,5 +618,6 @@ PDFEM_REGISTER_PD_MODEL(
   "lps fft",
   "the LPS model of lps with LPS/Nodal volumes = uniform, evaluated for all "
   "nodes at once by FFT (specs/002 §2): all-PD regions on a uniform grid, "
-  "explicit dynamics, no broken bonds",
-  {})
+  "explicit dynamics, no broken bonds; damage by the paper's nodal energy "
+  "criterion (LPS fft/Damage = energy)",
+  pdfem::PDModels::declare_lps_fft_parameters)

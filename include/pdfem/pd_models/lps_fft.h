@@ -2,6 +2,7 @@
 #ifndef PDFEM_PD_MODELS_LPS_FFT_H
 #define PDFEM_PD_MODELS_LPS_FFT_H
 
+#include <pdfem/fft/operator.h>
 #include <pdfem/pd_models/interface.h>
 
 #include <deal.II/base/tensor.h>
@@ -19,7 +20,7 @@ namespace pdfem
   {
     template <int dim>
     class FftOperator;
-  }
+  } // namespace FFT
 
   namespace PDModels
   {
@@ -46,6 +47,15 @@ namespace pdfem
     NodeGrid<dim>
     detect_node_grid(const std::vector<dealii::Point<dim>> &x,
                      const std::string                     &file);
+
+    /// The failed body nodes of "lps fft" (integrity 0) and their bounding
+    /// box lo-hi (both 0 when none failed).
+    template <int dim>
+    struct FailedNodes
+    {
+      std::size_t             n = 0;
+      std::array<double, dim> lo{}, hi{};
+    };
 
     /**
      * The linearised LPS model of "lps" (specs/002 §1.4, eqs. 27-36;
@@ -74,6 +84,24 @@ namespace pdfem
      * hands each owner chunk its rows. With several ranks, the owners'
      * displacements are summed into the grid on every rank (one allreduce)
      * and every rank evaluates the whole grid.
+     *
+     * Damage (`LPS fft/Damage = energy`, doc/theory.md §14.5): the
+     * paper's pointwise energy criterion (specs/002 §1.6, eqs. 42-44,
+     * 50-51, 63). After every accepted step (commit_state()) the strain
+     * energy density W of FFT::Operator::energy_density() (the paper's
+     * convention, twice the physical one, §7 E11) is compared with
+     *
+     *   W_c = G_0 / delta,
+     *
+     * G_0 = `LPS fft/Fracture energy`, and lambda(x) = 0 where W > W_c, for
+     * good (FFT::update_integrity()); the operator's masks become beta =
+     * chi_B lambda (FFT::Operator::set_masks()), so that the forces of the
+     * next step see the dead nodes (the paper's one-step lag, eq. 63): a
+     * dead node carries no force and loses all its bonds to the FFT, while
+     * the families keep every bond intact (no bond breaks in the coupled
+     * system; the damage shows in damage() and max_damage). damage() is the
+     * FFT damage index (specs/002 eq. 65) with the normalisation of
+     * `LPS fft/Damage index` (body by default: 0 in an intact body).
      *
      * Limits (InputError naming `Peridynamics/Model`): no FE cells; no
      * broken bonds (pre-existing cracks, bond-breaking criteria: the FFT
@@ -128,6 +156,22 @@ namespace pdfem
              const NodalField<dim> &u,
              double                *f) const override;
 
+      /// With damage: W of @p u, the nodes above W_c die for good, the
+      /// masks and the damage index follow.
+      void
+      commit_state(const NodalField<dim> &u) override;
+
+      /// Owner @p o's damage index (the masks of the last commit_state()).
+      double
+      damage(std::size_t o, const NodalField<dim> &u) const override;
+
+      /// The integrity lambda of every box node.
+      void
+      save_state(StateArchive &state) const override;
+
+      void
+      restore_state(const StateArchive &state) override;
+
       /// Refused (InputError): no tangent, explicit dynamics only.
       void
       tangent_row(std::size_t                          o,
@@ -161,12 +205,82 @@ namespace pdfem
         return box;
       }
 
+      /// Owner @p o's node in the periodic box.
+      std::size_t
+      box_node_of(const std::size_t o) const
+      {
+        return box_node[o];
+      }
+
+      /// The FFT operator (its grid, material and current masks).
+      const FFT::FftOperator<dim> &
+      fft_operator() const
+      {
+        return *op;
+      }
+
+      /// chi_B and lambda of every box node.
+      const std::vector<double> &
+      body_mask() const
+      {
+        return body;
+      }
+
+      const std::vector<double> &
+      integrity() const
+      {
+        return lambda;
+      }
+
+      /// W of every box node at the last commit_state() (empty before).
+      const std::vector<double> &
+      energy_density() const
+      {
+        return W_box;
+      }
+
+      /// W_c = G_0 / delta (0 without damage).
+      double
+      critical_energy_density() const
+      {
+        return W_c;
+      }
+
+      /// Damage = energy?
+      bool
+      damage_active() const
+      {
+        return damage_on;
+      }
+
+      /// The failed body nodes and their bounding box (where the cracks
+      /// ran).
+      FailedNodes<dim>
+      failed_nodes() const;
+
+      /// The nodes the last commit_state() failed.
+      std::size_t
+      last_failed() const
+      {
+        return n_last_failed;
+      }
+
     private:
       std::string source_file;
       bool        inverse_distance = true;
       double      dirichlet_layer  = 1.;
       double      delta = 0., A = 0., B = 0., bulk_modulus = 0.;
       double      node_volume = 0.;
+      /// LPS fft/Damage = energy, G_0 and W_c = G_0 / delta.
+      bool                     damage_on       = false;
+      double                   fracture_energy = 0., W_c = 0.;
+      FFT::DamageNormalisation normalisation{};
+      std::size_t              n_last_failed = 0;
+      std::vector<double>      body, lambda, W_box, d_box;
+
+      /// The owners' @p u into u_box (all ranks: one allreduce).
+      void
+      gather(const NodalField<dim> &u);
 
       NodeGrid<dim>                 body_grid;
       std::array<unsigned int, dim> box{};
