@@ -20,6 +20,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
@@ -129,8 +130,16 @@ namespace
         // Open MPI binds each rank to one core when it starts one or two:
         // a 1-rank run would lose its threads (pdfem then uses one; its
         // note says so). Unbound, K ranks share the machine's cores as an
-        // in-process run does. A binding the user chose stays.
-        setenv("OMPI_MCA_hwloc_base_binding_policy", "none", 0);
+        // in-process run does. A binding the user chose stays. (The runs
+        // get the environment pdfem-study started with, not setenv()'s.)
+        const std::string unbound     = "OMPI_MCA_hwloc_base_binding_policy=";
+        auto             &environment = original_environment();
+        if (std::none_of(environment.begin(),
+                         environment.end(),
+                         [&](const std::string &e) {
+                           return e.compare(0, unbound.size(), unbound) == 0;
+                         }))
+          environment.push_back(unbound + "none");
       }
   }
 

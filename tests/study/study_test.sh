@@ -9,7 +9,8 @@
 #                     a consistent pareto column, the overrides in each run's parameters.prm
 #   reference_run     --reference run:"...": the errors against the reference run's summary.json
 #   failed_run        a run that diverges stays in study.csv with its state and no error; exit 3
-#   ranks             --vary ranks=1,2: mpirun pdfem runs (in_process 0), outputs as pdfem's (1e-10)
+#   ranks             --vary ranks=1,2: mpirun pdfem runs (in_process 0), outputs as pdfem's (1e-10),
+#                     the 1-rank run unbound (as many threads as a plain run)
 #   chart             study.png is a PNG, study_pareto.csv holds the runs marked pareto = 1
 #   chart_series      with two --vary, study_chart.csv has one series per value of the first
 #   bad_vary, unknown_parameter, unknown_output, unknown_option
@@ -147,6 +148,9 @@ ranks)
     [ "$("$checker" get study/run_00$k/summary.json ranks)" = $k ] || fail "row $k: summary.json ranks"
     close "$(csv study/study.csv $k final.max_displacement.x)" "$p" 1e-10 || fail "row $k: not pdfem's value"
   done
+  # The 1-rank run is not bound to one core by mpirun: it has the threads a plain run has.
+  [ "$("$checker" get study/run_001/summary.json threads)" = "$("$checker" get plain/summary.json threads)" ] ||
+    { cat study/run_001/run.log; fail "the 1-rank run has $("$checker" get study/run_001/summary.json threads) thread(s), a plain run $("$checker" get plain/summary.json threads)"; }
   ;;
 chart)
   "$study" "$scene" --vary "$E=70e9,140e9" --output final.max_displacement.x --reference 1.1e-4 \
