@@ -17,26 +17,15 @@ scene="$here/center_crack_strip.prm"
 slit="$root/applications/benchmarks/operator/centre_crack_slit.geo"
 reference=(--output final.crack_tips.tip0.K_I --reference 9.1372e5)
 
-study() { # NAME ARGS...: pdfem-study into $work/NAME; its csv and png to $out/studies_NAME.*
-  local name=$1
-  shift
-  "$build/bin/pdfem-study" "$scene" "$@" "${reference[@]}" -o "$work/$name"
-  cp "$work/$name/study.csv" "$out/studies_$name.csv"
-  if [ -f "$work/$name/study.png" ]; then
-    cp "$work/$name/study.png" "$out/studies_$name.png"
-  fi
-}
-study cc_fe --set "Mesh/Input file=$slit" --set "Mesh/PD regions=none" \
+source "$here/study_common.sh"
+study cc_fe "$scene" "${reference[@]}" --set "Mesh/Input file=$slit" --set "Mesh/PD regions=none" \
   --set "Fracture/Domain inner radius=20" --set "Fracture/Domain outer radius=60" \
   --vary "Mesh/Mesh size factor=2,1,0.5"
-study cc_band --set "Mesh/PD regions=none" --vary "Mesh/Mesh size factor=1,0.5" \
+study cc_band "$scene" "${reference[@]}" --set "Mesh/PD regions=none" --vary "Mesh/Mesh size factor=1,0.5" \
   --vary "Fracture/Adaptive margin=2,4,8"
-study cc_all_pd --set "Mesh/PD regions=all" --vary "Mesh/Mesh size factor=1,0.5"
+study cc_all_pd "$scene" "${reference[@]}" --set "Mesh/PD regions=all" --vary "Mesh/Mesh size factor=1,0.5"
 
 # One table for one chart: a row per run, its error in the column of its model.
-column() { # FILE NAME: the 1-based index of column NAME in FILE's header
-  head -n 1 "$1" | tr ',' '\n' | grep -n -x -F "$2" | cut -d: -f1
-}
 merged="$out/studies_cc_models.csv"
 echo "wall_seconds,fe_slit,band_margin_2,band_margin_4,band_margin_8,all_pd,mesh_size_factor,dofs" > "$merged"
 for name in cc_fe cc_band cc_all_pd; do

@@ -23,18 +23,7 @@ fi
 "$build/bin/pdfem-convert" "$input" --output "$work/plate" > /dev/null
 scene="$work/plate/platCrack_NewMarkOFF_FC2.prm"
 
-study() { # NAME ARGS...: run pdfem-study into $work/NAME, copy its csv and png to $out/studies_NAME.*
-  local name=$1 status=0
-  shift
-  "$build/bin/pdfem-study" "$@" -o "$work/$name" || status=$?
-  if [ "$status" -ne 0 ] && [ "$status" -ne 3 ]; then # 3: some runs failed (kept in the table)
-    exit "$status"
-  fi
-  cp "$work/$name/study.csv" "$out/studies_$name.csv"
-  if [ -f "$work/$name/study.png" ]; then
-    cp "$work/$name/study.png" "$out/studies_$name.png"
-  fi
-}
+source "$here/study_common.sh"
 grid=(--vary "Driver/Type=explicit,newmark"
   --vary "Driver/Time step=2.5e-7,5e-7,1e-6,1.87e-6,4e-6,1e-5,2.75e-5")
 reference='run:Driver/Type=explicit;Driver/Time step=1.25e-7'

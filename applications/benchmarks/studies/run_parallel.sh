@@ -19,23 +19,15 @@ sed "s/@H@/0.0625/" "$root/applications/benchmarks/scaling/box.geo.in" > "$work/
 cp "$root/applications/benchmarks/scaling/box.prm" "$work/box.prm"
 exact=5e-5 # sigma / E * 0.5 m = 7e6 / 70e9 * 0.5
 
-study() { # NAME THREADS RANKS: pdfem-study into $work/NAME; its csv and png to $out/studies_NAME.*
-  local name=$1 threads=$2 ranks=$3
-  DEAL_II_NUM_THREADS=$threads "$build/bin/pdfem-study" "$work/box.prm" \
-    --vary "Mesh/Global refinements=$refinements" --vary "ranks=$ranks" \
-    --output final.max_displacement.x --reference "$exact" -o "$work/$name"
-  cp "$work/$name/study.csv" "$out/studies_$name.csv"
-  if [ -f "$work/$name/study.png" ]; then
-    cp "$work/$name/study.png" "$out/studies_$name.png"
-  fi
+source "$here/study_common.sh"
+box_study() { # NAME THREADS RANKS
+  DEAL_II_NUM_THREADS=$2 study "$1" "$work/box.prm" --vary "Mesh/Global refinements=$refinements" \
+    --vary "ranks=$3" --output final.max_displacement.x --reference "$exact"
 }
-study parallel_1thread 1 1,2
-study parallel_2threads 2 1
+box_study parallel_1thread 1 1,2
+box_study parallel_2threads 2 1
 
 # One row per mesh: columns of the two study tables looked up by their header names.
-column() { # FILE NAME: the 1-based index of column NAME in FILE's header
-  head -n 1 "$1" | tr ',' '\n' | grep -n -x -F "$2" | cut -d: -f1
-}
 t1="$out/studies_parallel_1thread.csv"
 t2="$out/studies_parallel_2threads.csv"
 awk -F, -v r="$(column "$t1" "Mesh/Global refinements")" -v n="$(column "$t1" ranks)" \

@@ -10,14 +10,7 @@
 #
 #   applications/benchmarks/studies/run_plate_hole.sh [BUILD_DIR] [OUT_DIR]
 source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" "${1:-}" "${2:-}"
-study() {  # NAME ARGS...: run pdfem-study into $work/NAME, copy its csv and png to $out/studies_NAME.*
-  local name=$1; shift
-  "$build/bin/pdfem-study" "$@" -o "$work/$name"
-  cp "$work/$name/study.csv" "$out/studies_$name.csv"
-  if [ -f "$work/$name/study.png" ]; then
-    cp "$work/$name/study.png" "$out/studies_$name.png"
-  fi
-}
+source "$here/study_common.sh"
 study plate_hole "$here/plate_with_hole.prm" \
   --vary "Mesh/Mesh size factor=1,0.7,0.5,0.35,0.25" --vary "Peridynamics/Horizon factor=3,4" \
   --output final.max_stress.xx --reference 2.198e7
