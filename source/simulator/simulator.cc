@@ -58,125 +58,6 @@ namespace pdfem
     , progress(root ? &std::cout : nullptr)
   {}
 
-  Drivers::RunTraits
-  make_run_traits(const std::string       &file,
-                  const int                dim,
-                  const std::string       &model_name,
-                  const bool               nonlinear,
-                  const double             density,
-                  const Solvers::Settings &linear_solver,
-                  const std::string       &driver_name,
-                  const bool               smooth_degradation)
-  {
-    Drivers::RunTraits traits;
-    traits.smooth_degradation = smooth_degradation;
-    traits.file               = file;
-    traits.dim                = dim;
-    traits.model_name         = model_name;
-    traits.nonlinear_model    = nonlinear;
-    traits.has_mass           = density > 0.;
-    traits.assembled_matrix   = !linear_solver.matrix_free();
-    traits.driver_name        = driver_name;
-    return traits;
-  }
-
-  template <int dim>
-  void
-  check_plugins(const Drivers::Interface       &driver,
-                const Fracture::Criterion<dim> *criterion,
-                const Drivers::RunTraits       &traits,
-                const Fracture::Settings       &fracture)
-  {
-    driver.check(traits);
-    if (criterion && traits.nonlinear_model)
-      throw InputError(traits.file,
-                       "Fracture/Criterion",
-                       "the " + traits.model_name +
-                         " model softens its bonds itself: it takes no crack "
-                         "criterion",
-                       "none");
-    if (criterion)
-      criterion->check(Fracture::CriterionTraits{traits.file,
-                                                 driver.dynamic(),
-                                                 traits.driver_name});
-    if (fracture.adaptive_margin > 0. && driver.dynamic())
-      throw InputError(traits.file,
-                       "Fracture/Adaptive margin",
-                       "the adaptive PD region belongs to quasi-static runs",
-                       "0 with Driver/Type = " + traits.driver_name);
-    if (fracture.automatic_region > 0. && !driver.grows_cracks())
-      throw InputError(traits.file,
-                       "Fracture/Automatic region",
-                       "the automatic PD region grows between the steps of "
-                       "a quasi-static run",
-                       "0 with Driver/Type = " + traits.driver_name +
-                         ", or Driver/Type = quasi-static");
-  }
-
-  std::string
-  default_model_name(const bool dynamic_driver,
-                     const bool cracks,
-                     const bool free_crack_faces)
-  {
-    const bool energy = dynamic_driver || (cracks && !free_crack_faces);
-    return energy ? "pdlsm energy" : "pdlsm";
-  }
-
-  template <int dim>
-  RunPlugins<dim>
-  make_plugins(const std::string        &file,
-               const Drivers::Settings  &driver_settings,
-               const Fracture::Settings &fracture,
-               const ModelChoice        &model,
-               dealii::ParameterHandler *parameters,
-               const double              density,
-               const Solvers::Settings  &linear_solver)
-  {
-    RunPlugins<dim> plugins;
-    plugins.driver = Drivers::create(driver_settings.type, file);
-    plugins.driver->initialize(driver_settings, file, dim);
-    plugins.model_name = model.name == "auto" ?
-                           default_model_name(plugins.driver->dynamic(),
-                                              model.pre_existing_cracks ||
-                                                fracture.criterion != "none",
-                                              model.free_crack_faces) :
-                           model.name;
-    if (parameters != nullptr)
-      {
-        plugins.model = PDModels::create<dim>(plugins.model_name, file);
-        parameters->enter_subsection("Peridynamics");
-        plugins.model->parse_parameters(*parameters, file);
-        parameters->leave_subsection();
-        if (model.free_crack_faces && !plugins.model->layout().free_crack_faces)
-          throw InputError(file,
-                           "Peridynamics/Crack faces",
-                           "'free surface' is an option of the collocated "
-                           "pdlsm; " +
-                             plugins.model_name + " treats crack faces itself",
-                           "'cut bonds', or Peridynamics/Model = pdlsm");
-      }
-    const bool nonlinear_model = plugins.model && !plugins.model->linear();
-    plugins.criterion =
-      Fracture::create_criterion<dim>(fracture.criterion, file);
-    if (plugins.criterion)
-      plugins.criterion->initialize(fracture, file);
-    check_plugins<dim>(
-      *plugins.driver,
-      plugins.criterion.get(),
-      make_run_traits(
-        file,
-        dim,
-        plugins.model_name,
-        nonlinear_model,
-        density,
-        linear_solver.resolve(nonlinear_model,
-                              plugins.driver->needs_assembled_matrix()),
-        driver_settings.type,
-        plugins.model && plugins.model->layout().smooth_degradation),
-      fracture);
-    return plugins;
-  }
-
   namespace
   {
     /// Remove the run outputs pdfem writes (and only those) from @p folder;
@@ -766,20 +647,9 @@ namespace pdfem
     return impl->assessment;
   }
 
-#define INSTANTIATE(dim)                                                        \
-  template struct RunSetup<dim>;                                                \
-  template class Simulator<dim>;                                                \
-  template RunPlugins<dim> make_plugins<dim>(const std::string &,               \
-                                             const Drivers::Settings &,         \
-                                             const Fracture::Settings &,        \
-                                             const ModelChoice &,               \
-                                             dealii::ParameterHandler *,        \
-                                             double,                            \
-                                             const Solvers::Settings &);        \
-  template void            check_plugins<dim>(const Drivers::Interface &,       \
-                                   const Fracture::Criterion<dim> *, \
-                                   const Drivers::RunTraits &,       \
-                                   const Fracture::Settings &);
+#define INSTANTIATE(dim)         \
+  template struct RunSetup<dim>; \
+  template class Simulator<dim>;
   PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
 } // namespace pdfem
