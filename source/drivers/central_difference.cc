@@ -284,6 +284,14 @@ namespace pdfem
       class ExplicitRun : public TimeIntegrationRun<CentralDifference>
       {
       public:
+        /// Forces only: the step and its stable size (a power iteration of
+        /// M^-1 K by internal forces) need no tangent.
+        bool
+        needs_tangent() const override
+        {
+          return false;
+        }
+
         void
         initialize(const Settings    &settings,
                    const std::string &file,

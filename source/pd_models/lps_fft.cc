@@ -242,23 +242,8 @@ namespace pdfem
                          "share of its cells",
                          "LPS/Nodal volumes = uniform with lps fft, or Model "
                          "= lps");
-      if (!entry_or_empty(prm, "Pre-existing cracks").empty())
-        throw InputError(file,
-                         model,
-                         "lps fft cannot cut single bonds (the FFT form has "
-                         "node masks only), and Peridynamics/Pre-existing "
-                         "cracks cut them",
-                         "no pre-existing cracks with lps fft, or Model = lps");
-      const std::string criterion = scene_entry(prm, "Fracture", "Criterion");
-      if (!criterion.empty() && criterion != "none")
-        throw InputError(file,
-                         model,
-                         "lps fft cannot break single bonds (the FFT form has "
-                         "node masks only), and Fracture/Criterion = " +
-                           criterion + " breaks them",
-                         "Fracture/Criterion = none with lps fft (its own "
-                         "nodal energy criterion: LPS fft/Damage = energy), "
-                         "or Model = lps");
+      // Drivers that need a tangent, pre-existing cracks and crack criteria
+      // are refused by make_plugins() (Layout::tangent, breakable_bonds).
       const std::string driver = scene_entry(prm, "Driver", "Type");
       if (damage_on && !driver.empty() && driver != "explicit")
         throw InputError(file,
@@ -267,13 +252,6 @@ namespace pdfem
                          "of explicit dynamics, and Driver/Type = " +
                            driver + " has none",
                          "Damage = none, or Driver/Type = explicit");
-      if (!driver.empty() && driver != "explicit")
-        throw InputError(file,
-                         model,
-                         "lps fft evaluates forces only, without a tangent, "
-                         "and Driver/Type = " +
-                           driver + " needs one",
-                         "Driver/Type = explicit with lps fft, or Model = lps");
     }
 
     template <int dim>
@@ -286,6 +264,8 @@ namespace pdfem
       l.nodal_body_force = true;
       l.free_crack_faces = false;
       l.history          = damage_on;
+      l.tangent          = false;
+      l.breakable_bonds  = false;
       return l;
     }
 

@@ -100,13 +100,37 @@ namespace pdfem
         parameters->enter_subsection("Peridynamics");
         plugins.model->parse_parameters(*parameters, file);
         parameters->leave_subsection();
-        if (model.free_crack_faces && !plugins.model->layout().free_crack_faces)
+        const PDModels::Layout layout = plugins.model->layout();
+        if (model.free_crack_faces && !layout.free_crack_faces)
           throw InputError(file,
                            "Peridynamics/Crack faces",
                            "'free surface' is an option of the collocated "
                            "pdlsm; " +
                              plugins.model_name + " treats crack faces itself",
                            "'cut bonds', or Peridynamics/Model = pdlsm");
+        if (!layout.tangent && plugins.driver->needs_tangent())
+          throw InputError(file,
+                           "Peridynamics/Model",
+                           plugins.model_name +
+                             " evaluates forces only, without a tangent, and "
+                             "Driver/Type = " +
+                             driver_settings.type + " needs one",
+                           "a driver of forces only (Driver/Type = explicit), "
+                           "or another Peridynamics/Model");
+        if (!layout.breakable_bonds &&
+            (model.pre_existing_cracks || fracture.criterion != "none"))
+          throw InputError(file,
+                           "Peridynamics/Model",
+                           plugins.model_name +
+                             " cannot cut or break single bonds, and " +
+                             (model.pre_existing_cracks ?
+                                std::string("Peridynamics/Pre-existing cracks "
+                                            "cut") :
+                                "Fracture/Criterion = " + fracture.criterion +
+                                  " breaks") +
+                             " them",
+                           "no pre-existing cracks and Fracture/Criterion = "
+                           "none, or another Peridynamics/Model");
       }
     const bool nonlinear_model = plugins.model && !plugins.model->linear();
     plugins.criterion =

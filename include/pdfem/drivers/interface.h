@@ -218,6 +218,15 @@ namespace pdfem
         return false;
       }
 
+      /// Does the driver need the PD model's tangent (a stiffness or its
+      /// diagonal blocks)? A model of forces only
+      /// (PDModels::Layout::tangent = false) is refused with such a driver.
+      virtual bool
+      needs_tangent() const
+      {
+        return true;
+      }
+
       /// Does the driver work with the assembled matrix itself (factorise
       /// it, read its rows)? Linear solver Type = auto then takes the
       /// direct path (Solvers::Settings::resolve()).

@@ -120,6 +120,14 @@ namespace pdfem
       /// (degradation_state() says how far), so that a driver may switch
       /// methods on it.
       bool smooth_degradation = false;
+      /// The model gives a tangent (tangent_row() or family_tangent()). A
+      /// model of forces only says false, and make_plugins() refuses it a
+      /// driver that needs one (Drivers::Interface::needs_tangent()).
+      bool tangent = true;
+      /// Single bonds of the model can be cut and broken (bonds_changed()).
+      /// A model that cannot (node masks only) says false, and
+      /// make_plugins() refuses it pre-existing cracks and crack criteria.
+      bool breakable_bonds = true;
     };
 
     /**
