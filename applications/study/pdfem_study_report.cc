@@ -9,9 +9,12 @@
 #include <iostream>
 
 #include "pdfem_study.h"
+#include <boost/algorithm/string/join.hpp>
 
 namespace pdfem_study
 {
+  using boost::algorithm::join;
+
   namespace
   {
     /// A CSV field: quoted when it holds a comma, a quote or a line break.
@@ -24,16 +27,6 @@ namespace pdfem_study
       for (char c : s)
         out += c == '"' ? std::string("\"\"") : std::string(1, c);
       return out + "\"";
-    }
-
-    /// The items joined by @p separator.
-    std::string
-    join(const std::vector<std::string> &items, const std::string &separator)
-    {
-      std::string out;
-      for (std::size_t i = 0; i < items.size(); ++i)
-        out += (i ? separator : "") + items[i];
-      return out;
     }
 
     /// The reference values as the table's title says them.

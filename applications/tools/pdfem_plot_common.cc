@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "pdfem_plot.h"
+#include <boost/algorithm/string/join.hpp>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkRenderWindow.h>
@@ -96,10 +97,7 @@ namespace pdfem_plot
   std::string
   join(const std::vector<std::string> &items, const std::string &separator)
   {
-    std::string out;
-    for (std::size_t i = 0; i < items.size(); ++i)
-      out += (i ? separator : "") + items[i];
-    return out;
+    return boost::algorithm::join(items, separator);
   }
 
   std::vector<std::string>
