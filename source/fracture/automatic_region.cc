@@ -75,8 +75,7 @@ namespace pdfem
           if (cell_is_pd[i])
             continue;
           const Point<dim> center = cell->center();
-          const double     reach =
-            circumradius(cell) + margin * std::pow(cell->measure(), 1. / dim);
+          const double     reach  = margin_reach(cell, margin);
           for (std::size_t s = 0; s < all_seeds.size(); s += dim + 1)
             {
               Point<dim> seed;

@@ -670,8 +670,7 @@ namespace pdfem
           if (cell_is_pd[i])
             continue;
           const Point<dim> center = cell->center();
-          const double     reach =
-            circumradius(cell) + margin * std::pow(cell->measure(), 1. / dim);
+          const double     reach  = margin_reach(cell, margin);
           for (const auto &crack : cracks)
             if (distance_to_crack(center, crack) <= reach)
               {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace pdfem
@@ -24,16 +25,6 @@ namespace pdfem
       double load_ratio = std::numeric_limits<double>::infinity();
     };
 
-    /**
-     * The automatic PD region (`Fracture/Automatic region` = f): an FE cell
-     * with a node whose largest principal stress sigma_1 (the averaged
-     * nodal stress of NodalResults) reaches @p threshold = f sigma_t seeds
-     * the region; it and every FE cell whose centre lies within its own
-     * circumradius plus @p margin of its sizes (measure^(1/dim)) plus the
-     * seed's circumradius of a seed's centre become PD in @p cell_is_pd.
-     * Collective: the seeds of all ranks are gathered, so that @p
-     * cell_is_pd stays the same on every rank.
-     */
     /// The largest distance of a vertex of @p cell from its centre: how far
     /// the region-growing rules reach from a cell's centre to its edge.
     template <typename Cell>
@@ -45,6 +36,17 @@ namespace pdfem
       for (const unsigned int v : cell->vertex_indices())
         radius = std::max(radius, cell->vertex(v).distance(center));
       return radius;
+    }
+
+    /// How far from the centre of @p cell a seed (a crack, a stressed
+    /// cell) makes the cell PD: its circumradius plus @p margin of its sizes
+    /// (measure^(1/dim)), the adaptive margin of both region-growing rules.
+    template <typename Cell>
+    double
+    margin_reach(const Cell &cell, const double margin)
+    {
+      constexpr int dim = std::decay_t<decltype(*cell)>::dimension;
+      return circumradius(cell) + margin * std::pow(cell->measure(), 1. / dim);
     }
 
     /**
@@ -66,6 +68,16 @@ namespace pdfem
                                       region_ratio;
     }
 
+    /**
+     * The automatic PD region (`Fracture/Automatic region` = f): an FE cell
+     * with a node whose largest principal stress sigma_1 (the averaged
+     * nodal stress of NodalResults) reaches @p threshold = f sigma_t seeds
+     * the region; it and every FE cell whose centre lies within its own
+     * circumradius plus @p margin of its sizes (measure^(1/dim)) plus the
+     * seed's circumradius of a seed's centre become PD in @p cell_is_pd.
+     * Collective: the seeds of all ranks are gathered, so that @p
+     * cell_is_pd stays the same on every rank.
+     */
     template <int dim>
     RegionGrowth
     extend_pd_region_by_stress(const Coupling::CoupledSystem<dim> &system,
