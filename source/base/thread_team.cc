@@ -148,6 +148,7 @@ namespace pdfem
         busy.fetch_sub(1);
       }
   }
+
   unsigned int
   cores_allowed()
   {
@@ -174,5 +175,4 @@ namespace pdfem
            std::to_string(threads) + "; 'mpirun --bind-to none' lets it use " +
            std::to_string(threads);
   }
-
 } // namespace pdfem
