@@ -53,7 +53,10 @@ namespace pdfem
     CoupledSystem<dim>::Impl::set_up_choice()
     {
       const Solvers::Settings &ls = settings.linear_solver;
-      if (choice || !ls.automatic)
+      // Type = auto resolves to cg for a model of forces only: nothing to
+      // choose from (no matrix to factorise); write_solver_summary() gives
+      // the reason.
+      if (choice || !ls.automatic || ls.conjugate_gradients())
         return;
       // The assembled matrix's entries (FE cells and one row block per PD
       // family), and its LU factors at a fill of 10 (2D) or 25 (3D) times
@@ -127,15 +130,25 @@ namespace pdfem
         {
           if (auxiliary_stale)
             assemble_auxiliary();
-          if (block_inverse.empty())
+          // CG takes the AMG alone (a symmetric preconditioner), so that
+          // the block-Jacobi correction, which reads the PD tangent's
+          // diagonal blocks, is made for GMRES only: a model of forces
+          // only is solved by CG with products alone.
+          const bool cg = settings.linear_solver.conjugate_gradients();
+          if (!cg && block_inverse.empty())
             make_block_jacobi();
-          return solver.solve(
-            [this](Vector &y, const Vector &x) { vmult(y, x); },
-            du,
-            r,
-            auxiliary,
-            [this](Vector &w, const Vector &t) { apply_block_jacobi(w, t); },
-            allowed_residual);
+          Solvers::LinearSolver::Operator correction;
+          if (!cg)
+            correction = [this](Vector &w, const Vector &t) {
+              apply_block_jacobi(w, t);
+            };
+          return solver.solve([this](Vector       &y,
+                                     const Vector &x) { vmult(y, x); },
+                              du,
+                              r,
+                              auxiliary,
+                              correction,
+                              allowed_residual);
         }
       if (tangent_stale)
         {
@@ -197,14 +210,24 @@ namespace pdfem
                  s.settings.linear_solver.automatic ?
                    std::string("auto") :
                    s.settings.linear_solver.type);
-      json.value("path",
-                 to_string(s.matrix_free ? Solvers::SolvePath::matrix_free :
-                                           Solvers::SolvePath::direct));
+      const std::string path =
+        s.matrix_free && s.settings.linear_solver.conjugate_gradients() ?
+          "cg (amg fe)" :
+          to_string(s.matrix_free ? Solvers::SolvePath::matrix_free :
+                                    Solvers::SolvePath::direct);
+      json.value("path", path);
       json.value("factorizations",
                  static_cast<unsigned long>(s.solver.n_factorizations()));
       json.value("analyses", static_cast<unsigned long>(s.solver.n_analyses()));
       if (s.choice)
         s.choice->write(json);
+      else if (s.settings.linear_solver.automatic)
+        {
+          json.begin_object("choice");
+          json.value("start", path);
+          json.value("reason", s.settings.linear_solver.choice_reason);
+          json.end_object();
+        }
       json.end_object();
     }
 

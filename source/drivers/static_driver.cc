@@ -149,6 +149,12 @@ namespace pdfem
           return true; // Newton iterations without cuts or checks
         }
 
+        bool
+        solves_with_products() const override
+        {
+          return true; // equilibrate() uses the tangent in its solves only
+        }
+
         std::map<std::string, double>
         timings() const override
         {

@@ -505,7 +505,8 @@ namespace pdfem
                        "Peridynamics/Model",
                        "lps fft evaluates forces only, without a tangent, "
                        "which this run needs",
-                       "Driver/Type = explicit with lps fft, or Model = lps");
+                       "Driver/Type = explicit, or static with Linear "
+                       "solver/Type = cg, with lps fft; or Model = lps");
     }
 
     template <int dim>

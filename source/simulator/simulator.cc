@@ -444,7 +444,8 @@ namespace pdfem
     // Linear solver Type = auto made concrete for this model and driver.
     s.setup.settings.linear_solver = s.setup.settings.linear_solver.resolve(
       plugins.model && !plugins.model->linear(),
-      plugins.driver->needs_assembled_matrix());
+      plugins.driver->needs_assembled_matrix(),
+      plugins.model && !plugins.model->layout().tangent);
     s.model_name = plugins.model_name;
     s.driver     = std::move(plugins.driver);
     s.criterion  = std::move(plugins.criterion);

@@ -66,6 +66,40 @@ namespace pdfem
                          ", or Driver/Type = quasi-static");
   }
 
+  /**
+   * A PD model of forces only (no tangent) with a driver that needs one:
+   * allowed where the driver's tangent serves only its linear solves
+   * (Drivers::Interface::solves_with_products()), the model is linear and
+   * symmetric, and the linear solver is matrix-free CG, which applies the
+   * operator by force evaluations. Otherwise InputError naming the
+   * parameter to change.
+   */
+  template <int dim>
+  void
+  check_forces_only_model(const std::string              &file,
+                          const std::string              &model_name,
+                          const PDModels::Interface<dim> &model,
+                          const Drivers::Interface       &driver,
+                          const std::string              &driver_name,
+                          const Solvers::Settings        &linear_solver)
+  {
+    const std::string what =
+      model_name + " evaluates forces only, without a tangent, and ";
+    if (!driver.solves_with_products() || !model.linear() || !model.symmetric())
+      throw InputError(file,
+                       "Peridynamics/Model",
+                       what + "Driver/Type = " + driver_name + " needs one",
+                       "a driver of forces only (Driver/Type = explicit, or "
+                       "static for a linear model), or another "
+                       "Peridynamics/Model");
+    if (!linear_solver.resolve(false, false, true).solves_with_products_only())
+      throw InputError(file,
+                       "Linear solver/Type",
+                       what + "Driver/Type = " + driver_name +
+                         " solves with it unless the solver is matrix-free CG",
+                       "cg (or auto) with Preconditioner = amg fe");
+  }
+
   std::string
   default_model_name(const bool dynamic_driver,
                      const bool cracks,
@@ -109,14 +143,12 @@ namespace pdfem
                              plugins.model_name + " treats crack faces itself",
                            "'cut bonds', or Peridynamics/Model = pdlsm");
         if (!layout.tangent && plugins.driver->needs_tangent())
-          throw InputError(file,
-                           "Peridynamics/Model",
-                           plugins.model_name +
-                             " evaluates forces only, without a tangent, and "
-                             "Driver/Type = " +
-                             driver_settings.type + " needs one",
-                           "a driver of forces only (Driver/Type = explicit), "
-                           "or another Peridynamics/Model");
+          check_forces_only_model(file,
+                                  plugins.model_name,
+                                  *plugins.model,
+                                  *plugins.driver,
+                                  driver_settings.type,
+                                  linear_solver);
         if (!layout.breakable_bonds &&
             (model.pre_existing_cracks || fracture.criterion != "none"))
           throw InputError(file,

@@ -35,7 +35,9 @@ namespace pdfem
                         "factorisation kept across solves by what their "
                         "solves cost, and says why in summary.json "
                         "(linear_solver.choice). A nonlinear PD model, "
-                        "Newmark and dynamic relaxation get 'direct'.");
+                        "Newmark and dynamic relaxation get 'direct'; a PD "
+                        "model of forces only (lps fft) gets cg with 'amg "
+                        "fe', whose products are force evaluations.");
       prm.declare_entry("Direct solver",
                         "mumps",
                         Selection("mumps|klu"),
@@ -76,13 +78,23 @@ namespace pdfem
 
     Settings
     Settings::resolve(const bool nonlinear_model,
-                      const bool driver_needs_matrix) const
+                      const bool driver_needs_matrix,
+                      const bool forces_only_model) const
     {
       if (type != "auto")
         return *this;
       Settings resolved  = *this;
       resolved.automatic = true;
-      if (nonlinear_model || driver_needs_matrix)
+      if (forces_only_model)
+        {
+          resolved.type           = "cg";
+          resolved.preconditioner = "amg fe";
+          resolved.choice_reason =
+            "the PD model evaluates forces only: matrix-free CG, "
+            "preconditioned by AMG of the cells' Q1/P1 stiffness, needs no "
+            "tangent (there is no matrix to factorise)";
+        }
+      else if (nonlinear_model || driver_needs_matrix)
         {
           resolved.type = "direct";
           resolved.choice_reason =

@@ -236,6 +236,19 @@ namespace pdfem
         return false;
       }
 
+      /**
+       * Are all of the driver's uses of the tangent linear solves, so that
+       * matrix-free CG (Solvers::Settings::solves_with_products_only()),
+       * which applies the operator by force evaluations, can stand in for
+       * it? A linear, symmetric model of forces only may then run with
+       * this driver although needs_tangent() is true.
+       */
+      virtual bool
+      solves_with_products() const
+      {
+        return false;
+      }
+
       /// Remarks for stderr before the run (e.g. an unstable choice).
       virtual std::vector<std::string>
       notes() const

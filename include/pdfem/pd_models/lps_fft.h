@@ -106,7 +106,9 @@ namespace pdfem
      * Limits (InputError naming `Peridynamics/Model`): no FE cells; no
      * broken bonds (pre-existing cracks, bond-breaking criteria: the FFT
      * form knows node masks only, not single bonds); no tangent (explicit
-     * dynamics only: Driver/Type = explicit); LPS/Nodal volumes = uniform
+     * dynamics, or statics by matrix-free CG, whose products with the
+     * stiffness are force evaluations: K x is the internal force of x for
+     * this linear model); LPS/Nodal volumes = uniform
      * (every node carries Delta V).
      */
     template <int dim>
@@ -172,7 +174,7 @@ namespace pdfem
       void
       restore_state(const StateArchive &state) override;
 
-      /// Refused (InputError): no tangent, explicit dynamics only.
+      /// Refused (InputError): no tangent (explicit, or static by CG).
       void
       tangent_row(std::size_t                          o,
                   const NodalField<dim>               &u,

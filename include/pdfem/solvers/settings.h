@@ -57,11 +57,25 @@ namespace pdfem
        * driver that works with the assembled matrix (Newmark, dynamic
        * relaxation), gets the direct path; otherwise matrix-free GMRES
        * ('amg fe'), with choose_by_cost set so that the system may go over
-       * to a direct factorisation where that is cheaper. Other types are
-       * returned as they are.
+       * to a direct factorisation where that is cheaper. A PD model of
+       * forces only (no tangent, PDModels::Layout::tangent false) gets
+       * matrix-free CG ('amg fe', which needs no PD tangent with CG) and
+       * no choice by cost: there is no matrix to factorise. Other types
+       * are returned as they are.
        */
       Settings
-      resolve(bool nonlinear_model, bool driver_needs_matrix) const;
+      resolve(bool nonlinear_model,
+              bool driver_needs_matrix,
+              bool forces_only_model = false) const;
+
+      /// Matrix-free CG: solves with products of the operator alone (the
+      /// 'amg fe' preconditioner without its block-Jacobi correction), so
+      /// that a linear, symmetric PD model of forces only can be solved.
+      bool
+      solves_with_products_only() const
+      {
+        return matrix_free() && conjugate_gradients();
+      }
 
       static void
       declare(dealii::ParameterHandler &prm);
