@@ -1,0 +1,149 @@
+#!/usr/bin/env python3
+"""dog_bone_mesh.py -- the round dog-bone of lps_dog_bone as a uniform grid of equal cubes (gmsh .msh 2.2).
+
+Usage: python3 dog_bone_mesh.py [--cells-per-mm F] [--layers] OUTPUT.msh
+
+The specimen (lengths in mm, written in m; z is the axis, 0 <= z <= 117):
+  * grips: cylinders of radius 30 over 0 <= z <= 30 and 87 <= z <= 117, each with a lateral
+    through-hole of radius 5 along y, centred on the axis at z = 15 and z = 102;
+  * gauge: a cylinder of radius 15 over 45 <= z <= 72;
+  * fillets: quarter circles of radius 15 from each grip's inner edge (r = 30) to the gauge
+    (r(z) = 30 - sqrt(15^2 - (z - 45)^2) over 30 <= z <= 45, mirrored over 72 <= z <= 87).
+The FCBM paper's dog-bone (specs/002 §4.1) gives its dimensions only in a figure that our text does
+not have; this shape keeps what the text says (lateral extent about 6 cm, height about 12-13 cm,
+two lateral through-holes, delta = 3 mm small against the holes) and is stated as ours.
+
+The grid: cubes of side h = 1 mm / F (F = --cells-per-mm, default 1), the lattice x = (i - (n - 1)/2) h
+over 60 F lattice points in x and y, z = k h. A cube is kept when its centre is inside the shape
+(the staircase of the curved surfaces is the same for every model run on the mesh). The nodes are
+the vertices of the kept cubes.
+
+--layers adds the FCBM's fictitious Dirichlet layers Gamma_3: 3 mm (one horizon) of the grip's
+cross-section below z = 0 and above z = 117 (volume "layers"), so that the body runs from -3 to
+120 mm (124 F lattice planes at F = 1: with a gap of 4 planes the FFT box is 64 x 64 x 128 = 2^19).
+
+Physical groups: volumes "specimen" (11) and "layers" (12); surfaces "bottom" (1) and "top" (2),
+the lowest and highest faces of the body; with --layers the node sets "bottom_layer" (5) and
+"top_layer" (6), every node with z <= 0 or z >= 117 mm (the layers and the specimen's end faces:
+the nodes that the PD run's Dirichlet layer holds, for an FE run of the same problem); points
+"pin_a" (3) and "pin_b" (4), two nodes in the
+gauge's mid-plane 10 mm apart along x, which hold the rigid motions that the axial loading leaves
+free (u_x = u_y = 0 at pin_a, u_y = 0 at pin_b: a minimal support, so its reactions are zero for a
+self-equilibrated load).
+"""
+import math
+import sys
+
+
+def inside(x, y, z):
+    """Is the point (mm) inside the specimen?"""
+    if z < 0.0 or z > 117.0:
+        return False
+    r = math.hypot(x, y)
+    zz = z if z <= 58.5 else 117.0 - z  # mirror the upper half onto the lower
+    if zz <= 30.0:
+        if x * x + (zz - 15.0) ** 2 <= 25.0:  # the through-hole along y
+            return False
+        return r <= 30.0
+    if zz <= 45.0:
+        return r <= 30.0 - math.sqrt(max(0.0, 225.0 - (zz - 45.0) ** 2))
+    return r <= 15.0
+
+
+def in_layer(x, y, z):
+    return (-3.0 <= z < 0.0 or 117.0 < z <= 120.0) and math.hypot(x, y) <= 30.0
+
+
+def main(argv):
+    per_mm = 1
+    layers = False
+    args = []
+    i = 0
+    while i < len(argv):
+        if argv[i] == "--cells-per-mm":
+            per_mm = int(argv[i + 1])
+            i += 2
+        elif argv[i] == "--layers":
+            layers = True
+            i += 1
+        else:
+            args.append(argv[i])
+            i += 1
+    if len(args) != 1 or per_mm < 1:
+        sys.exit("usage: python3 dog_bone_mesh.py [--cells-per-mm N >= 1] [--layers] OUTPUT.msh")
+    h = 1.0 / per_mm
+    n = 60 * per_mm  # lattice points in x and y
+    k_lo = -3 * per_mm if layers else 0
+    k_hi = (120 if layers else 117) * per_mm  # last lattice plane
+
+    def x_of(i):
+        return (i - (n - 1) / 2.0) * h
+
+    node_id = {}
+    cells = []  # (volume tag, 8 lattice points)
+    for k in range(k_lo, k_hi):
+        zc = (k + 0.5) * h
+        for j in range(n - 1):
+            yc = x_of(j + 0.5)
+            for i in range(n - 1):
+                xc = x_of(i + 0.5)
+                if inside(xc, yc, zc):
+                    tag = 11
+                elif layers and in_layer(xc, yc, zc):
+                    tag = 12
+                else:
+                    continue
+                corners = [(i, j, k), (i + 1, j, k), (i + 1, j + 1, k), (i, j + 1, k),
+                           (i, j, k + 1), (i + 1, j, k + 1), (i + 1, j + 1, k + 1), (i, j + 1, k + 1)]
+                for c in corners:
+                    if c not in node_id:
+                        node_id[c] = len(node_id) + 1
+                cells.append((tag, corners))
+    faces = []  # (surface tag, 4 lattice points)
+    for tag, c in cells:
+        if c[0][2] == k_lo:
+            faces.append((1, [c[0], c[3], c[2], c[1]]))
+        if c[4][2] == k_hi:
+            faces.append((2, [c[4], c[5], c[6], c[7]]))
+    k_mid = int(round(58.5 * per_mm))
+    i_a = (n - 1) // 2
+    pins = [(3, (i_a, i_a, k_mid)), (4, (i_a + 10 * per_mm, i_a, k_mid))]
+    for _, p in pins:
+        if p not in node_id:
+            sys.exit("dog_bone_mesh.py: a pin is not a node of the mesh")
+    if layers:
+        for p in node_id:
+            if p[2] <= 0:
+                pins.append((5, p))
+            elif p[2] >= 117 * per_mm:
+                pins.append((6, p))
+
+    with open(args[0], "w") as out:
+        out.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n")
+        names = [(3, 11, "specimen"), (2, 1, "bottom"), (2, 2, "top"), (0, 3, "pin_a"), (0, 4, "pin_b")]
+        if layers:
+            names += [(3, 12, "layers"), (0, 5, "bottom_layer"), (0, 6, "top_layer")]
+        out.write("$PhysicalNames\n%d\n" % len(names))
+        for d, t, name in names:
+            out.write('%d %d "%s"\n' % (d, t, name))
+        out.write("$EndPhysicalNames\n$Nodes\n%d\n" % len(node_id))
+        for (i, j, k), nid in sorted(node_id.items(), key=lambda item: item[1]):
+            out.write("%d %.12g %.12g %.12g\n" % (nid, x_of(i) * 1e-3, x_of(j) * 1e-3, k * h * 1e-3))
+        out.write("$EndNodes\n$Elements\n%d\n" % (len(pins) + len(faces) + len(cells)))
+        e = 0
+        for tag, p in pins:
+            e += 1
+            out.write("%d 15 2 %d %d %d\n" % (e, tag, tag, node_id[p]))
+        for tag, f in faces:
+            e += 1
+            out.write("%d 3 2 %d %d %s\n" % (e, tag, tag, " ".join(str(node_id[c]) for c in f)))
+        for tag, c in cells:
+            e += 1
+            out.write("%d 5 2 %d %d %s\n" % (e, tag, tag, " ".join(str(node_id[p]) for p in c)))
+        out.write("$EndElements\n")
+    print("%s: %d cubes of %.4g mm, %d nodes%s" % (args[0], len(cells), h, len(node_id),
+                                                  ", with the Dirichlet layers" if layers else ""))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
