@@ -134,11 +134,11 @@ namespace pdfem
           // the block-Jacobi correction, which reads the PD tangent's
           // diagonal blocks, is made for GMRES only: a model of forces
           // only is solved by CG with products alone.
-          const bool cg = settings.linear_solver.conjugate_gradients();
-          if (!cg && block_inverse.empty())
+          const bool correct = !settings.linear_solver.conjugate_gradients();
+          if (correct && block_inverse.empty())
             make_block_jacobi();
           Solvers::LinearSolver::Operator correction;
-          if (!cg)
+          if (correct)
             correction = [this](Vector &w, const Vector &t) {
               apply_block_jacobi(w, t);
             };
@@ -210,22 +210,21 @@ namespace pdfem
                  s.settings.linear_solver.automatic ?
                    std::string("auto") :
                    s.settings.linear_solver.type);
-      const std::string path =
-        s.matrix_free && s.settings.linear_solver.conjugate_gradients() ?
-          "cg (amg fe)" :
-          to_string(s.matrix_free ? Solvers::SolvePath::matrix_free :
-                                    Solvers::SolvePath::direct);
+      const Solvers::Settings &ls   = s.settings.linear_solver;
+      const std::string        path = s.matrix_free ?
+                                        ls.type + " (" + ls.preconditioner + ")" :
+                                        to_string(Solvers::SolvePath::direct);
       json.value("path", path);
       json.value("factorizations",
                  static_cast<unsigned long>(s.solver.n_factorizations()));
       json.value("analyses", static_cast<unsigned long>(s.solver.n_analyses()));
       if (s.choice)
         s.choice->write(json);
-      else if (s.settings.linear_solver.automatic)
+      else if (ls.automatic)
         {
           json.begin_object("choice");
           json.value("start", path);
-          json.value("reason", s.settings.linear_solver.choice_reason);
+          json.value("reason", ls.choice_reason);
           json.end_object();
         }
       json.end_object();
