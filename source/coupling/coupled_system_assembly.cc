@@ -221,7 +221,12 @@ namespace pdfem
       // ones). On plateCrack FC2 the full rebuilds took 3.2 % of the samples,
       // the in-place additions 0.9 % (perf). Only a
       // DoF leaving the held set, or a newly prescribed one, rebuilds the
-      // whole matrix.
+      // whole matrix. 'pd model' preconditions without it: none is made.
+      if (settings.linear_solver.preconditioner == "pd model")
+        {
+          auxiliary_stale = false;
+          return;
+        }
       const std::vector<bool> cut = cells_cut_by_broken_bonds();
       std::vector<bool>       held(owned.n_elements(), false);
       for (const unsigned int lid : held_lid)

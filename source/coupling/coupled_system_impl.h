@@ -203,6 +203,13 @@ namespace pdfem
       /// block-Jacobi correction of the "amg fe" preconditioner.
       void
       make_block_jacobi();
+      /// z = P r with the PD model's own preconditioner on its owners' rows
+      /// (PDModels::Interface::precondition()) and r / (held diagonal) on
+      /// the held DoFs ('pd model').
+      void
+      apply_model_preconditioner(
+        dealii::TrilinosWrappers::MPI::Vector       &z,
+        const dealii::TrilinosWrappers::MPI::Vector &r) const;
       /// w = D^-1 t with the node blocks of make_block_jacobi().
       void
       apply_block_jacobi(dealii::TrilinosWrappers::MPI::Vector       &w,

@@ -346,6 +346,34 @@ namespace pdfem
         }
     }
 
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::apply_model_preconditioner(
+      TrilinosWrappers::MPI::Vector       &z,
+      const TrilinosWrappers::MPI::Vector &r) const
+    {
+      // Held rows are decoupled from the rest (vmult()): they enter the
+      // model's preconditioner as zeros and get their own diagonal.
+      const double       *rv = r.trilinos_vector()[0];
+      double             *zv = z.trilinos_vector()[0];
+      std::vector<double> r_rows(dim * families.owners.size()), z_rows;
+      std::vector<bool>   held(owned.n_elements(), false);
+      for (const unsigned int lid : held_lid)
+        held[lid] = true;
+      for (std::size_t o = 0; o < families.owners.size(); ++o)
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            const unsigned int lid = owned_lid[families.owners[o]][c];
+            r_rows[dim * o + c]    = held[lid] ? 0. : rv[lid];
+          }
+      model->precondition(r_rows, z_rows);
+      for (std::size_t o = 0; o < families.owners.size(); ++o)
+        for (unsigned int c = 0; c < dim; ++c)
+          zv[owned_lid[families.owners[o]][c]] = z_rows[dim * o + c];
+      for (unsigned int i = 0; i < held_lid.size(); ++i)
+        zv[held_lid[i]] = rv[held_lid[i]] / held_value[i];
+    }
+
 #define INSTANTIATE(dim)                                                     \
   template void CoupledSystem<dim>::Impl::make_pd_chunks();                  \
   template void CoupledSystem<dim>::Impl::for_each_pd_chunk(                 \
@@ -366,6 +394,9 @@ namespace pdfem
   template std::vector<unsigned int> CoupledSystem<dim>::Impl::family_nodes( \
     std::size_t) const;                                                      \
   template void CoupledSystem<dim>::Impl::apply_block_jacobi(                \
+    TrilinosWrappers::MPI::Vector &, const TrilinosWrappers::MPI::Vector &)  \
+    const;                                                                   \
+  template void CoupledSystem<dim>::Impl::apply_model_preconditioner(        \
     TrilinosWrappers::MPI::Vector &, const TrilinosWrappers::MPI::Vector &)  \
     const;
     PDFEM_INSTANTIATE(INSTANTIATE)

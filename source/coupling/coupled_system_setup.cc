@@ -203,7 +203,17 @@ namespace pdfem
       }
       auxiliary.clear();
       n_matrix_entries = 0;
-      if (matrix_free)
+      if (matrix_free && settings.linear_solver.preconditioner == "pd model")
+        {
+          if (!layout.preconditioner ||
+              std::find(cell_pd.begin(), cell_pd.end(), false) != cell_pd.end())
+            throw InputError(settings.source_file,
+                             "Linear solver/Preconditioner",
+                             "'pd model' needs an all-PD region whose model "
+                             "has a preconditioner of its own",
+                             "amg fe, or Peridynamics/Model = lps fft");
+        }
+      else if (matrix_free)
         make_auxiliary_pattern();
       else
         make_assembled_pattern();

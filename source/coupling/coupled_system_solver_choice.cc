@@ -126,6 +126,14 @@ namespace pdfem
                                             const Vector &r,
                                             const double  allowed_residual)
     {
+      if (matrix_free && settings.linear_solver.preconditioner == "pd model")
+        return solver.solve([this](Vector &y, const Vector &x) { vmult(y, x); },
+                            du,
+                            r,
+                            [this](Vector &z, const Vector &t) {
+                              apply_model_preconditioner(z, t);
+                            },
+                            allowed_residual);
       if (matrix_free)
         {
           if (auxiliary_stale)

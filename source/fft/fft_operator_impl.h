@@ -7,6 +7,7 @@
 
 #include <pdfem/fft/fft_operator.h>
 
+#include <complex>
 #include <cstring>
 #include <vector>
 
@@ -249,6 +250,10 @@ namespace pdfem
       std::vector<std::vector<double>> P, q, gb;
       std::vector<double>              p, m, minv, theta;
       double                           A = 0., B = 0.;
+
+      // apply_periodic_inverse(): G^(kappa)^-1, dim x dim per mode (row
+      // major), empty until the first use.
+      std::vector<std::complex<double>> periodic_inverse;
     };
   } // namespace FFT
 } // namespace pdfem

@@ -266,6 +266,7 @@ namespace pdfem
       l.history          = damage_on;
       l.tangent          = false;
       l.breakable_bonds  = false;
+      l.preconditioner   = true;
       return l;
     }
 
@@ -430,6 +431,27 @@ namespace pdfem
     {
       gather(u);
       op->apply(u_box, L_box);
+    }
+
+    template <int dim>
+    void
+    LpsFft<dim>::precondition(const std::vector<double> &r,
+                              std::vector<double>       &z)
+    {
+      // The stiffness of the owners' rows is Delta V (-dL/du): its periodic
+      // inverse is G^-1 / Delta V. Every rank holds the whole grid.
+      const PD::Families &f = *this->region.families;
+      r_box.assign(dim * n_box, 0.);
+      for (std::size_t o = 0; o < f.owners.size(); ++o)
+        for (unsigned int c = 0; c < dim; ++c)
+          r_box[c * n_box + box_node[o]] = r[dim * o + c];
+      if (Utilities::MPI::n_mpi_processes(this->region.comm) > 1)
+        Utilities::MPI::sum(r_box, this->region.comm, r_box);
+      op->apply_periodic_inverse(r_box, z_box);
+      z.resize(dim * f.owners.size());
+      for (std::size_t o = 0; o < f.owners.size(); ++o)
+        for (unsigned int c = 0; c < dim; ++c)
+          z[dim * o + c] = z_box[c * n_box + box_node[o]] / node_volume;
     }
 
     template <int dim>

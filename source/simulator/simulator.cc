@@ -445,7 +445,8 @@ namespace pdfem
     s.setup.settings.linear_solver = s.setup.settings.linear_solver.resolve(
       plugins.model && !plugins.model->linear(),
       plugins.driver->needs_assembled_matrix(),
-      plugins.model && !plugins.model->layout().tangent);
+      plugins.model && !plugins.model->layout().tangent,
+      plugins.model && plugins.model->layout().preconditioner);
     s.model_name = plugins.model_name;
     s.driver     = std::move(plugins.driver);
     s.criterion  = std::move(plugins.criterion);

@@ -92,12 +92,15 @@ namespace pdfem
                        "a driver of forces only (Driver/Type = explicit, or "
                        "static for a linear model), or another "
                        "Peridynamics/Model");
-    if (!linear_solver.resolve(false, false, true).solves_with_products_only())
+    if (!linear_solver
+           .resolve(false, false, true, model.layout().preconditioner)
+           .solves_with_products_only())
       throw InputError(file,
                        "Linear solver/Type",
                        what + "Driver/Type = " + driver_name +
                          " solves with it unless the solver is matrix-free CG",
-                       "cg (or auto) with Preconditioner = amg fe");
+                       "cg (or auto) with Preconditioner = amg fe or pd "
+                       "model");
   }
 
   std::string

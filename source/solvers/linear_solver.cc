@@ -358,6 +358,61 @@ namespace pdfem
       };
     } // namespace
 
+    template <typename Preconditioner>
+    unsigned int
+    LinearSolver::krylov(const Operator                      &K,
+                         TrilinosWrappers::MPI::Vector       &x,
+                         const TrilinosWrappers::MPI::Vector &b,
+                         const Preconditioner                &P,
+                         const double allowed_residual) const
+    {
+      const double  b_norm = b.l2_norm();
+      SolverControl control(settings.max_iterations,
+                            std::max(settings.tolerance * b_norm,
+                                     allowed_residual),
+                            false,
+                            false);
+      x = 0.;
+      try
+        {
+          if (settings.conjugate_gradients())
+            SolverCG<TrilinosWrappers::MPI::Vector>(control).solve(
+              OperatorWrapper{K}, x, b, P);
+          else
+            SolverGMRES<TrilinosWrappers::MPI::Vector>(
+              control,
+              SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+                settings.restart + 2, true))
+              .solve(OperatorWrapper{K}, x, b, P);
+        }
+      catch (const SolverControl::NoConvergence &e)
+        {
+          throw RunFailure(
+            "linear solver diverged",
+            std::string(settings.conjugate_gradients() ? "CG" : "GMRES") +
+              " did not reach the tolerance " + number(settings.tolerance) +
+              " in " + std::to_string(e.last_step) +
+              " iterations (residual reduced by " +
+              number(e.last_residual / b_norm) + ")");
+        }
+      if (!std::isfinite(x.l2_norm()))
+        throw RunFailure("linear solver diverged",
+                         "the solution of the linear system is not finite");
+      return control.last_step();
+    }
+
+    unsigned int
+    LinearSolver::solve(const Operator                      &K,
+                        TrilinosWrappers::MPI::Vector       &x,
+                        const TrilinosWrappers::MPI::Vector &b,
+                        const Operator                      &preconditioner,
+                        const double                         allowed_residual)
+    {
+      last_iterations =
+        krylov(K, x, b, OperatorWrapper{preconditioner}, allowed_residual);
+      return last_iterations;
+    }
+
     unsigned int
     LinearSolver::solve(const Operator                       &K,
                         TrilinosWrappers::MPI::Vector        &x,
@@ -387,48 +442,18 @@ namespace pdfem
           amg_stale  = false;
         }
 
-      const double  b_norm = b.l2_norm();
-      SolverControl control(settings.max_iterations,
-                            std::max(settings.tolerance * b_norm,
-                                     allowed_residual),
-                            false,
-                            false);
-      SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
-        control,
-        SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
-          settings.restart + 2, true));
-      x = 0.;
-      try
-        {
-          if (settings.conjugate_gradients())
-            {
-              // The block-Jacobi correction after the AMG is not symmetric:
-              // CG takes the symmetric V-cycle alone.
-              SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-              cg.solve(OperatorWrapper{K}, x, b, *amg);
-            }
-          else if (block_jacobi)
-            gmres.solve(OperatorWrapper{K},
-                        x,
-                        b,
-                        CorrectedAMG{*amg, K, block_jacobi, {}, {}});
-          else
-            gmres.solve(OperatorWrapper{K}, x, b, *amg);
-        }
-      catch (const SolverControl::NoConvergence &e)
-        {
-          throw RunFailure(
-            "linear solver diverged",
-            std::string(settings.conjugate_gradients() ? "CG" : "GMRES") +
-              " did not reach the tolerance " + number(settings.tolerance) +
-              " in " + std::to_string(e.last_step) +
-              " iterations (residual reduced by " +
-              number(e.last_residual / b_norm) + ")");
-        }
-      if (!std::isfinite(x.l2_norm()))
-        throw RunFailure("linear solver diverged",
-                         "the solution of the linear system is not finite");
-      last_iterations = control.last_step();
+      if (settings.conjugate_gradients())
+        // The block-Jacobi correction after the AMG is not symmetric: CG
+        // takes the symmetric V-cycle alone.
+        last_iterations = krylov(K, x, b, *amg, allowed_residual);
+      else if (block_jacobi)
+        last_iterations = krylov(K,
+                                 x,
+                                 b,
+                                 CorrectedAMG{*amg, K, block_jacobi, {}, {}},
+                                 allowed_residual);
+      else
+        last_iterations = krylov(K, x, b, *amg, allowed_residual);
       if (rebuild)
         amg_fresh_iterations = last_iterations;
       return last_iterations;

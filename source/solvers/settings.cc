@@ -45,7 +45,7 @@ namespace pdfem
                         "klu (serial, gathers on rank 0).");
       prm.declare_entry("Preconditioner",
                         "amg fe",
-                        Selection("amg fe|amg|ilu"),
+                        Selection("amg fe|pd model|amg|ilu"),
                         "For gmres and cg: 'amg fe' (matrix-free coupled "
                         "operator; "
                         "Trilinos ML algebraic multigrid built from the local "
@@ -54,7 +54,11 @@ namespace pdfem
                         "coupled operator), 'amg' (ML built from the "
                         "assembled coupled matrix, kept while bonds break "
                         "until GMRES needs twice its first iteration count) "
-                        "or 'ilu' (Ifpack ILU(1) of it). With cg the AMG "
+                        "or 'ilu' (Ifpack ILU(1) of it), or 'pd model' "
+                        "(matrix-free; an all-PD region whose model has an "
+                        "approximate inverse of its own: lps fft, the "
+                        "inverse of its periodic operator by FFT). With cg "
+                        "the AMG "
                         "smooths before and after its coarse correction "
                         "and 'amg fe' has no block-Jacobi correction, so "
                         "that the preconditioner is symmetric.");
@@ -79,7 +83,8 @@ namespace pdfem
     Settings
     Settings::resolve(const bool nonlinear_model,
                       const bool driver_needs_matrix,
-                      const bool forces_only_model) const
+                      const bool forces_only_model,
+                      const bool model_preconditioner) const
     {
       if (type != "auto")
         return *this;
@@ -87,12 +92,17 @@ namespace pdfem
       resolved.automatic = true;
       if (forces_only_model)
         {
-          resolved.type           = "cg";
-          resolved.preconditioner = "amg fe";
+          resolved.type = "cg";
+          resolved.preconditioner =
+            model_preconditioner ? "pd model" : "amg fe";
           resolved.choice_reason =
-            "the PD model evaluates forces only: matrix-free CG, "
-            "preconditioned by AMG of the cells' Q1/P1 stiffness, needs no "
-            "tangent (there is no matrix to factorise)";
+            std::string("the PD model evaluates forces only: matrix-free "
+                        "CG needs no tangent (there is no matrix to "
+                        "factorise), ") +
+            (model_preconditioner ? "preconditioned by the model's own "
+                                    "approximate inverse" :
+                                    "preconditioned by AMG of the cells' "
+                                    "Q1/P1 stiffness");
         }
       else if (nonlinear_model || driver_needs_matrix)
         {

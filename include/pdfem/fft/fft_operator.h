@@ -93,6 +93,23 @@ namespace pdfem
       double
       bytes_per_node() const override;
 
+      /**
+       * z = G^-1 r with G the operator -L of this material on the periodic
+       * box with every mask 1 (a translation-invariant operator: its
+       * Fourier symbol G^(kappa) is a Hermitian dim x dim matrix per mode),
+       * the mode kappa = 0 (the rigid translations, where G^ = 0) replaced
+       * by s I, s the mean eigenvalue of the lowest nonzero mode. The
+       * inverse of the operator of an unbounded body: a preconditioner for
+       * the masked operator of a bounded one (Krylov solves of statics).
+       * The symbol is made at the first call (dim evaluations of L on unit
+       * impulses, dim^2 forward FFTs) and kept (dim^2 complex numbers per
+       * mode); each call costs dim forward and dim inverse FFTs. @p r and
+       * @p z are laid out as the displacements of apply().
+       */
+      void
+      apply_periodic_inverse(const std::vector<double> &r,
+                             std::vector<double>       &z);
+
       /// The number of forward and inverse FFTs since construction.
       std::size_t
       n_transforms() const;

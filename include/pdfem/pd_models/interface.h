@@ -128,6 +128,9 @@ namespace pdfem
       /// A model that cannot (node masks only) says false, and
       /// make_plugins() refuses it pre-existing cracks and crack criteria.
       bool breakable_bonds = true;
+      /// The model offers precondition() (Linear solver/Preconditioner =
+      /// pd model).
+      bool preconditioner = false;
     };
 
     /**
@@ -248,6 +251,23 @@ namespace pdfem
       prepare_forces(const NodalField<dim> &u)
       {
         (void)u;
+      }
+
+      /**
+       * z = P r with P an approximate inverse of the stiffness of this
+       * model's region, symmetric positive definite, for the Krylov solves
+       * of a region that is all PD: @p r and @p z hold dim rows per owner
+       * (owner o, component c at dim o + c), as forces(). The rows of held
+       * DoFs are set by the caller. For models whose Layout::preconditioner
+       * is true (Linear solver/Preconditioner = pd model); the default
+       * throws std::logic_error. Collective with several ranks.
+       */
+      virtual void
+      precondition(const std::vector<double> &r, std::vector<double> &z)
+      {
+        (void)r;
+        (void)z;
+        throw std::logic_error("this PD model has no preconditioner");
       }
 
       /**

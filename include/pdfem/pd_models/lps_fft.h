@@ -158,6 +158,13 @@ namespace pdfem
              const NodalField<dim> &u,
              double                *f) const override;
 
+      /// The inverse of the periodic operator's stiffness, Delta V G (FFT::
+      /// FftOperator::apply_periodic_inverse()): exact for a node whose
+      /// horizon lies inside the body, a preconditioner for CG statics.
+      void
+      precondition(const std::vector<double> &r,
+                   std::vector<double>       &z) override;
+
       /// With damage: W of @p u, the nodes above W_c die for good, the
       /// masks and the damage index follow.
       void
@@ -290,7 +297,9 @@ namespace pdfem
       /// Per owner: its grid point in the box.
       std::vector<std::size_t> box_node;
       /// The grid displacement (dim N_box, component-major) and L.
-      std::vector<double>                    u_box, L_box;
+      std::vector<double> u_box, L_box;
+      /// precondition()'s residual and correction on the box.
+      std::vector<double>                    r_box, z_box;
       std::unique_ptr<FFT::FftOperator<dim>> op;
     };
   } // namespace PDModels

@@ -83,6 +83,19 @@ namespace pdfem
             double allowed_residual                                    = 0.);
 
       /**
+       * Solve with CG or GMRES (Type) for an operator given by its product
+       * @p K, preconditioned by the operator @p preconditioner (z = P r;
+       * symmetric positive definite for CG), to |b - K x| <=
+       * max(tolerance |b|, @p allowed_residual).
+       */
+      unsigned int
+      solve(const Operator                              &K,
+            dealii::TrilinosWrappers::MPI::Vector       &x,
+            const dealii::TrilinosWrappers::MPI::Vector &b,
+            const Operator                              &preconditioner,
+            double                                       allowed_residual);
+
+      /**
        * The assembled matrix given to solve() has new values in the same
        * sparsity pattern: the next direct solve factorises it again
        * (numerically; the symbolic analysis of the pattern is kept). Its
@@ -142,6 +155,16 @@ namespace pdfem
       forget_preconditioner();
 
     private:
+      /// CG or GMRES (Type) from x = 0 with the preconditioner @p P (an
+      /// object with vmult()); RunFailure where it does not converge.
+      template <typename Preconditioner>
+      unsigned int
+      krylov(const Operator                              &K,
+             dealii::TrilinosWrappers::MPI::Vector       &x,
+             const dealii::TrilinosWrappers::MPI::Vector &b,
+             const Preconditioner                        &P,
+             double allowed_residual) const;
+
       /// Build the ML hierarchy of the assembled @p K (symmetric smoothed
       /// aggregation for CG) unless the one kept is still good; returns
       /// whether it was built.

@@ -20,7 +20,7 @@ namespace pdfem
     {
       std::string  type           = "direct"; // direct | gmres | cg | auto
       std::string  direct_solver  = "mumps";  // mumps | klu
-      std::string  preconditioner = "amg fe"; // amg fe | amg | ilu
+      std::string  preconditioner = "amg fe"; // amg fe | pd model | amg | ilu
       double       tolerance      = 1e-10;    // relative residual (gmres)
       unsigned int max_iterations = 2000;
       unsigned int restart        = 150; // gmres: Krylov vectors kept
@@ -45,11 +45,13 @@ namespace pdfem
         return type == "cg";
       }
 
-      /// The coupled operator is applied without assembling it ('amg fe').
+      /// The coupled operator is applied without assembling it ('amg fe',
+      /// 'pd model').
       bool
       matrix_free() const
       {
-        return iterative() && preconditioner == "amg fe";
+        return iterative() &&
+               (preconditioner == "amg fe" || preconditioner == "pd model");
       }
 
       /**
@@ -59,18 +61,21 @@ namespace pdfem
        * ('amg fe'), with choose_by_cost set so that the system may go over
        * to a direct factorisation where that is cheaper. A PD model of
        * forces only (no tangent, PDModels::Layout::tangent false) gets
-       * matrix-free CG ('amg fe', which needs no PD tangent with CG) and
-       * no choice by cost: there is no matrix to factorise. Other types
-       * are returned as they are.
+       * matrix-free CG ('amg fe', which needs no PD tangent with CG, or the
+       * model's own 'pd model' where it has one) and no choice by cost:
+       * there is no matrix to factorise. Other types are returned as they
+       * are.
        */
       Settings
       resolve(bool nonlinear_model,
               bool driver_needs_matrix,
-              bool forces_only_model = false) const;
+              bool forces_only_model    = false,
+              bool model_preconditioner = false) const;
 
       /// Matrix-free CG: solves with products of the operator alone (the
-      /// 'amg fe' preconditioner without its block-Jacobi correction), so
-      /// that a linear, symmetric PD model of forces only can be solved.
+      /// 'amg fe' preconditioner without its block-Jacobi correction, or
+      /// 'pd model'), so that a linear, symmetric PD model of forces only
+      /// can be solved.
       bool
       solves_with_products_only() const
       {
