@@ -128,6 +128,11 @@ namespace pdfem
       /// A model that cannot (node masks only) says false, and
       /// make_plugins() refuses it pre-existing cracks and crack criteria.
       bool breakable_bonds = true;
+      /// A displacement component in which the model gives its PD nodes no
+      /// stiffness at all (the transverse one of a uniaxial bar), or -1:
+      /// none. A static run then needs it prescribed at every PD node that
+      /// no FE cell holds (CoupledSystem::unheld_component()).
+      int stiffless_component = -1;
     };
 
     /**
