@@ -148,6 +148,31 @@ namespace pdfem
     }
 
     template <int dim>
+    std::string
+    CoupledSystem<dim>::unheld_component() const
+    {
+      const Impl &s = *impl;
+      const int   c = s.model ? s.model->layout().stiffless_component : -1;
+      if (c < 0)
+        return "";
+      unsigned int n_free = 0, first = 0;
+      for (unsigned int k = 0; k < s.n_nodes; ++k)
+        if (s.is_pd[k] && !s.is_fe[k] && !s.dof_fixed[s.node_dof[k][c]])
+          first = n_free++ == 0 ? k : first;
+      if (n_free == 0)
+        return "";
+      std::ostringstream line;
+      line << n_free << " PD node(s), the first at (";
+      for (unsigned int d = 0; d < dim; ++d)
+        line << (d ? ", " : "") << s.x[first][d];
+      line << "), can move freely in "
+           << "xyz"[c]
+           << ": the PD model gives them no stiffness in that direction and "
+              "no prescribed displacement holds it";
+      return line.str();
+    }
+
+    template <int dim>
     ForceBalance<dim>
     CoupledSystem<dim>::force_balance() const
     {
@@ -182,6 +207,7 @@ namespace pdfem
 #define INSTANTIATE(dim)                                                       \
   template std::vector<std::string> CoupledSystem<dim>::unheld_rigid_motions() \
     const;                                                                     \
+  template std::string       CoupledSystem<dim>::unheld_component() const;     \
   template ForceBalance<dim> CoupledSystem<dim>::force_balance() const;
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

@@ -59,6 +59,14 @@ namespace pdfem
              std::pow(delta, 3);
     }
 
+    double
+    bond_based_bar_micromodulus(const double E,
+                                const double delta,
+                                const double area)
+    {
+      return 2. * E / (area * delta * delta);
+    }
+
     template <int dim>
     double
     BondBasedBond<dim>::stretch(const Tensor<1, dim> &xi,
@@ -137,6 +145,17 @@ namespace pdfem
           "irreversible: T follows the largest stretch of every accepted "
           "state (an unloading bond keeps its softening, specs/003 §1.4); "
           "reversible: T follows the current stretch.");
+        prm.declare_entry(
+          "Body",
+          "continuum",
+          Patterns::Selection("continuum|uniaxial bar"),
+          "continuum: the micromodulus of the dimension and plane model; "
+          "uniaxial bar: a one-dimensional bar along x (specs/003 case A): "
+          "only the bonds along x act, c = 2 E / (A delta^2) with A the "
+          "cross-section one line of nodes carries. Needs Dimension = 2, a "
+          "PD region one square cell tall along x (two lines of nodes, each "
+          "a bar of half the strip), Poisson's ratio 0 and the transverse "
+          "displacements held (doc/theory.md §13.6).");
         prm.declare_entry("Volume correction",
                           "partial volumes",
                           Patterns::Selection("partial volumes|none"),
@@ -176,6 +195,11 @@ namespace pdfem
      * compressed. Bonds whose largest stretch reached s_c break for good
      * (bond_failed()). The Poisson's ratio must be the model's (1/3 plane
      * stress, 1/4 plane strain and 3D).
+     *
+     * Body = uniaxial bar (specs/003 §5.1 case A, theory.md §13.6): the
+     * strip one square cell h tall along x is two bars of cross-section
+     * A = h/2 (per unit thickness); only the bonds along x act, with
+     * c = 2 E / (A delta^2) (bond_based_bar_micromodulus()), nu = 0.
      */
     template <int dim>
     class BondBased : public Interface<dim>
@@ -194,7 +218,15 @@ namespace pdfem
         surface_correction = prm.get("Surface correction") == "energy";
         uniform_volumes    = prm.get("Nodal volumes") == "uniform";
         dirichlet_layer    = prm.get_double("Dirichlet layer");
+        bar                = prm.get("Body") == "uniaxial bar";
         prm.leave_subsection();
+        if (bar && dim != 2)
+          throw InputError(file,
+                           "Peridynamics/Bond based/Body",
+                           "a uniaxial bar is modelled in a 2D scene, this "
+                           "one has Dimension = " +
+                             std::to_string(dim),
+                           "continuum (or Dimension = 2 for uniaxial bar)");
         if (!degradation.active)
           return;
         const std::string section = "Peridynamics/Bond based/";
@@ -225,6 +257,8 @@ namespace pdfem
         Layout l             = pairwise_layout(dirichlet_layer);
         l.history            = degradation.active && irreversible;
         l.smooth_degradation = degradation.active;
+        // A bar's bonds along x give no stiffness in y.
+        l.stiffless_component = bar ? 1 : -1;
         return l;
       }
 
@@ -232,7 +266,7 @@ namespace pdfem
       initialize(const Region<dim> &r) override
       {
         this->region    = r;
-        const double nu = rnp_poissons_ratio(dim, r.plane_strain);
+        const double nu = bar ? 0. : rnp_poissons_ratio(dim, r.plane_strain);
         if (std::abs(r.poissons_ratio - nu) > 1e-3)
           throw InputError(
             r.source_file,
@@ -241,10 +275,13 @@ namespace pdfem
               " cannot be represented by the bond-based model, whose "
               "Poisson's ratio is " +
               number(nu) +
-              (dim == 2 ?
-                 (r.plane_strain ? " in plane strain" : " in plane stress") :
-                 " in 3D"),
+              (bar      ? " as a uniaxial bar (Body = uniaxial bar)" :
+               dim == 2 ? (r.plane_strain ? " in plane strain" :
+                                            " in plane stress") :
+                          " in 3D"),
             number(nu) + " (or a state-based model: pdlsm, pdlsm energy)");
+        if (bar)
+          check_bar_strip();
         const PD::Families &f = *r.families;
         double              h = 0.;
         for (const unsigned int k : f.owners)
@@ -252,8 +289,15 @@ namespace pdfem
         delta = Utilities::MPI::max(h, r.comm);
         if (!(delta > 0.))
           delta = 1.; // no PD node anywhere: no bond either
-        c =
-          bond_based_micromodulus(r.youngs_modulus, delta, dim, r.plane_strain);
+        // A bar: each of the strip's two lines of nodes carries half its
+        // height (per unit thickness, like the 2D micromoduli).
+        c = bar ? bond_based_bar_micromodulus(r.youngs_modulus,
+                                              delta,
+                                              0.5 * r.spacing) :
+                  bond_based_micromodulus(r.youngs_modulus,
+                                          delta,
+                                          dim,
+                                          r.plane_strain);
         pairwise_bond_volumes(r, uniform_volumes, bond_volume, pd_share);
 
         // Per bond: v V_m, then mu v V_m.
@@ -262,9 +306,14 @@ namespace pdfem
         for (std::size_t o = 0; o < f.owners.size(); ++o)
           for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
             {
-              const double L = (x[f.members[j]] - x[f.owners[o]]).norm();
-              volume_weight[j] =
-                bond_volume[f.members[j]] * partial_volume(L, r.spacing);
+              const Tensor<1, dim> xi = x[f.members[j]] - x[f.owners[o]];
+              const double         L  = xi.norm();
+              // A bar keeps the bonds along x only (weight 0: no force, no
+              // stiffness, no share of the damage).
+              const bool off_axis = bar && std::abs(xi[0]) < (1. - 1e-9) * L;
+              volume_weight[j]    = off_axis ? 0. :
+                                               bond_volume[f.members[j]] *
+                                              partial_volume(L, r.spacing);
             }
         weight = volume_weight;
         if (surface_correction)
@@ -393,6 +442,8 @@ namespace pdfem
           {"micromodulus", c},
           {"horizon", delta},
           {"spacing", this->region.spacing}};
+        if (bar)
+          list.emplace_back("bar cross-section", 0.5 * this->region.spacing);
         if (degradation.active)
           {
             list.emplace_back("onset stretch", degradation.onset);
@@ -501,6 +552,42 @@ namespace pdfem
         return irreversible ? std::max(s, largest_stretch[j]) : s;
       }
 
+      /**
+       * Body = uniaxial bar needs its PD nodes on the two edges of a strip
+       * one square cell tall along x: two lines y = y_0 and y_0 + h (h the
+       * spacing), each a bar of cross-section h/2 (per unit thickness).
+       */
+      void
+      check_bar_strip() const
+      {
+        const Region<dim> &r  = this->region;
+        double             lo = HUGE_VAL, hi = -HUGE_VAL;
+        for (unsigned int k = 0; k < r.position->size(); ++k)
+          if ((*r.pd_volume)[k] > 0.)
+            {
+              lo = std::min(lo, (*r.position)[k][1]);
+              hi = std::max(hi, (*r.position)[k][1]);
+            }
+        const double tol = 1e-6 * r.spacing;
+        bool two_lines   = lo <= hi && std::abs(hi - lo - r.spacing) <= tol;
+        for (unsigned int k = 0; two_lines && k < r.position->size(); ++k)
+          if ((*r.pd_volume)[k] > 0.)
+            {
+              const double y = (*r.position)[k][1];
+              two_lines = std::abs(y - lo) <= tol || std::abs(y - hi) <= tol;
+            }
+        if (!two_lines)
+          throw InputError(
+            r.source_file,
+            "Peridynamics/Bond based/Body",
+            "a uniaxial bar needs the PD region to be a strip of square "
+            "cells one cell tall along x, and its PD nodes span y = " +
+              number(lo) + " to " + number(hi) + " with cells of size " +
+              number(r.spacing),
+            "uniaxial bar on such a strip (two lines of nodes), or "
+            "continuum");
+      }
+
       /// v(|xi|): 1 up to delta - h/2, then linear to 0 at delta + h/2.
       double
       partial_volume(const double length, const double h) const
@@ -572,12 +659,14 @@ namespace pdfem
       }
 
       BondDegradation degradation;
-      bool            irreversible       = true;
-      bool            volume_correction  = true;
-      bool            surface_correction = true;
-      bool            uniform_volumes    = false;
-      double          dirichlet_layer    = 1.;
-      double          c = 0., delta = 0.;
+      /// Body = uniaxial bar: bonds along x, c = 2 E / (A delta^2).
+      bool   bar                = false;
+      bool   irreversible       = true;
+      bool   volume_correction  = true;
+      bool   surface_correction = true;
+      bool   uniform_volumes    = false;
+      double dirichlet_layer    = 1.;
+      double c = 0., delta = 0.;
       /// Per node: the volume its bonds carry, and V_k^pd / V_k.
       std::vector<double> bond_volume, pd_share;
       /// Per bond (family order): v V_m, mu v V_m, and the largest stretch

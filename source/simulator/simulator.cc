@@ -127,6 +127,14 @@ namespace pdfem
             "rigid motion (" +
               std::to_string(dim * (dim + 1) / 2) +
               ": translations and rotations)");
+        const std::string unheld_component = coupled->unheld_component();
+        if (!unheld_component.empty())
+          throw InputError(setup.file,
+                           "Boundary conditions/Dirichlet",
+                           unheld_component,
+                           "that component prescribed at every PD node, e.g. "
+                           "on boundaries that together hold every node (a "
+                           "uniaxial bar: y = 0 on bottom and top)");
       }
     setup.timings["setup"] = seconds_since(setup.setup_start);
     print_header();

@@ -82,6 +82,80 @@ namespace
                 1e-15);
   }
 
+  TEST(BondBased, BarMicromodulusIsTwoEOverADeltaSquared)
+  {
+    // specs/003 §1.2, §7 item 1: the 1D bar's c = 2 E / (A delta^2) (the
+    // paper's pi is a typo), case A: E = 2e11 Pa, A = 1e-6 m^2, delta =
+    // 3.015 dx over the paper's spacings.
+    for (const double dx : {0.1, 0.01, 1e-3, 1e-4, 5e-5})
+      {
+        const double delta    = 3.015 * dx;
+        const double expected = 2. * 2e11 / (1e-6 * delta * delta);
+        EXPECT_NEAR(PDModels::bond_based_bar_micromodulus(2e11, delta, 1e-6),
+                    expected,
+                    1e-12 * expected);
+      }
+
+    // The model with Body = uniaxial bar on a strip one cell h tall: each
+    // line of nodes is a bar of A = h/2 (per unit thickness), so c =
+    // 2 E / (h/2 delta^2); only its bonds along x act, so at u = 0 every
+    // tangent block is axial (the bonds across the strip carry nothing,
+    // the bonds along x nothing in y).
+    auto model =
+      make_model("bond based", {{"Bond based/Body", "uniaxial bar"}});
+    const double                       h = 0.05, E = 2e11;
+    parallel::shared::Triangulation<2> tria(MPI_COMM_WORLD);
+    GridGenerator::subdivided_hyper_rectangle(tria,
+                                              {20, 1},
+                                              Point<2>(0., 0.),
+                                              Point<2>(1., h));
+    Coupling::Settings<2> settings;
+    settings.material.youngs_modulus = E;
+    settings.material.poissons_ratio = 0.;
+    settings.material.plane_stress   = true;
+    settings.horizon_factor          = 3.015;
+    settings.pd_model                = model;
+    settings.linear_solver.type      = "direct";
+    Coupling::CoupledSystem<2> system(
+      tria, std::vector<bool>(tria.n_active_cells(), true), settings);
+    double c = 0.;
+    for (const auto &[name, value] : model->constants())
+      if (name == "micromodulus")
+        c = value;
+    const double delta    = 3.015 * h,
+                 expected = 2. * E / (0.5 * h * delta * delta);
+    EXPECT_NEAR(c, expected, 1e-12 * expected);
+
+    Field<>                   u(system.size().n_nodes);
+    std::vector<Tensor<2, 2>> blocks;
+    double                    axial = 0., other = 0.;
+    std::size_t               n_axial = 0, n_along_x = 0, n_bonds = 0;
+    const PD::Families       &f = system.families();
+    for (std::size_t o = 0; o < f.owners.size(); ++o)
+      {
+        model->tangent_row(o, u.field(), blocks);
+        ASSERT_EQ(blocks.size(), 1 + f.offsets[o + 1] - f.offsets[o]);
+        for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+          {
+            ++n_bonds;
+            n_along_x += system.node_position(f.members[j])[1] ==
+                         system.node_position(f.owners[o])[1];
+            n_axial += blocks[1 + j - f.offsets[o]][0][0] != 0.;
+          }
+        for (const auto &B : blocks)
+          {
+            axial = std::max(axial, std::abs(B[0][0]));
+            other = std::max(
+              {other, std::abs(B[0][1]), std::abs(B[1][0]), std::abs(B[1][1])});
+          }
+      }
+    EXPECT_GT(axial, 0.);
+    EXPECT_EQ(other, 0.);
+    // Exactly the bonds along x are stiff; the strip has bonds across too.
+    EXPECT_EQ(n_axial, n_along_x);
+    EXPECT_LT(n_along_x, n_bonds);
+  }
+
   /// max |dt/du_m - central differences of t(eta)| / max |dt/du_m| for
   /// one bond with reversible degradation T(s(eta)).
   template <int dim>

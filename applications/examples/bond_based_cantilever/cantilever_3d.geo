@@ -4,7 +4,9 @@
 //
 // Boundaries (boundary id = tag): left (1) x = -3 dx, right (2) x = 1.
 
-dx = 0.02;   // the paper's is 0.01 (8 times the nodes)
+// dx = 2 cm times Mesh/Mesh size factor (gmsh -clscale sets Mesh.MeshSizeFactor before it reads this
+// file): the paper's 1 cm (8 times the nodes) is `--set "Mesh/Mesh size factor=0.5"`.
+dx = 0.02 * Mesh.MeshSizeFactor;
 L  = 1.0;
 W  = 0.1;
 

@@ -517,6 +517,16 @@ namespace pdfem
       std::vector<std::string>
       unheld_rigid_motions() const;
 
+      /**
+       * With a PD model that gives no stiffness in one component
+       * (PDModels::Layout::stiffless_component): one line naming the PD
+       * nodes without FE cells whose component is not prescribed (how
+       * many, the first one), whose static solve would be singular. Empty:
+       * every such node is held, or the model has no such component.
+       */
+      std::string
+      unheld_component() const;
+
       /// The force balance at the last residual() state (collective).
       ForceBalance<dim>
       force_balance() const;

@@ -49,6 +49,20 @@ namespace pdfem
                             bool   plane_strain);
 
     /**
+     * The micromodulus c = 2 E / (A delta^2) of the one-dimensional
+     * bond-based bar of cross-section @p area with horizon @p horizon
+     * (specs/003 §1.2; the paper prints 2 E / (pi delta^2 A), a typo: the
+     * bar's strain energy density E eps^2 / 2 needs 2 E / (A delta^2)).
+     * With bond volumes A dx the bar's interior node then carries
+     * E A eps, the bar's force. `Body = uniaxial bar` of the bond-based
+     * model (doc/theory.md §13.6).
+     */
+    double
+    bond_based_bar_micromodulus(double youngs_modulus,
+                                double horizon,
+                                double area);
+
+    /**
      * One bond of the finite-deformation bond-based model (specs/003
      * eqs. 1-4, 13): with xi = x_m - x_k, eta = u_m - u_k, r = xi + eta,
      * L = |xi|, l = |r|, n = r / l and the stretch s = (l - L) / L, the

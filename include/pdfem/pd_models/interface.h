@@ -131,6 +131,11 @@ namespace pdfem
       /// The model offers precondition() (Linear solver/Preconditioner =
       /// pd model).
       bool preconditioner = false;
+      /// A displacement component in which the model gives its PD nodes no
+      /// stiffness at all (the transverse one of a uniaxial bar), or -1:
+      /// none. A static run then needs it prescribed at every PD node that
+      /// no FE cell holds (CoupledSystem::unheld_component()).
+      int stiffless_component = -1;
     };
 
     /**
