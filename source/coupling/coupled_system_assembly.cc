@@ -113,45 +113,16 @@ namespace pdfem
     }
 
     template <int dim>
-    template <typename Select, typename Use>
-    void
-    CoupledSystem<dim>::Impl::for_each_cell_stiffness(const Select &select,
-                                                      const Use    &use) const
-    {
-      // use(cell, local DoFs, K) for every locally owned cell that select()
-      // accepts, K its Q1/P1 elasticity stiffness.
-      hp::FEValues<dim>             fe_values(mapping,
-                                  fe,
-                                  quadrature,
-                                  update_gradients | update_JxW_values);
-      std::vector<global_dof_index> local_dofs;
-      std::vector<double>           K;
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned() && select(cell->active_cell_index()))
-          {
-            fe_values.reinit(cell);
-            FE::cell_stiffness(fe_values.get_present_fe_values(),
-                               settings.material,
-                               K);
-            local_dofs.resize(cell->get_fe().n_dofs_per_cell());
-            cell->get_dof_indices(local_dofs);
-            use(cell->active_cell_index(), local_dofs, K);
-          }
-    }
-
-    template <int dim>
     void
     CoupledSystem<dim>::Impl::assemble_fe_matrix()
     {
       // The FE cells' stiffness, unconstrained (f_int = K_FE u), once.
       fe_matrix = 0.;
-      for_each_cell_stiffness(
+      add_cell_stiffness(
+        fe_matrix,
         [&](const unsigned int c) { return !cell_pd[c]; },
-        [&](unsigned int,
-            const std::vector<global_dof_index> &local_dofs,
-            const std::vector<double>           &K) {
-          add_to_matrix(fe_matrix, local_dofs, local_dofs, K, false);
-        });
+        [](unsigned int) { return 1.; },
+        false);
       fe_matrix.compress(VectorOperation::add);
       if (matrix_free)
         assemble_auxiliary();
@@ -247,22 +218,16 @@ namespace pdfem
           auxiliary_cut.assign(cut.size(), false);
           auxiliary_held.assign(held.size(), false);
         }
-      unsigned int n_changed = 0;
-      for_each_cell_stiffness(
+      unsigned int n_changed = add_cell_stiffness(
+        auxiliary,
         [&](const unsigned int c) {
           return !incremental || cut[c] != auxiliary_cut[c];
         },
-        [&](const unsigned int                   c,
-            const std::vector<global_dof_index> &local_dofs,
-            std::vector<double>                  K) {
-          const double factor = !incremental ?
-                                  (cut[c] ? cut_cell_stiffness : 1.) :
-                                  cut_cell_stiffness - 1.;
-          for (double &k : K)
-            k *= factor;
-          add_to_matrix(auxiliary, local_dofs, local_dofs, K);
-          ++n_changed;
-        });
+        [&](const unsigned int c) {
+          return !incremental ? (cut[c] ? cut_cell_stiffness : 1.) :
+                                cut_cell_stiffness - 1.;
+        },
+        true);
       n_changed += add_held_diagonal(auxiliary, &auxiliary_held);
       auxiliary_cut  = cut;
       auxiliary_held = std::move(held);

@@ -100,11 +100,20 @@ namespace pdfem
       /// "amg fe" the auxiliary matrix: FE stiffness of every cell.
       void
       assemble_fe_matrix();
-      /// use(cell index, local DoFs, K) for every locally owned cell with
-      /// select(cell index), K its Q1/P1 stiffness (FE::cell_stiffness()).
-      template <typename Select, typename Use>
-      void
-      for_each_cell_stiffness(const Select &select, const Use &use) const;
+      /**
+       * Add factor(c) K_c to @p target for every locally owned cell c with
+       * select(c) (cell indices), K_c its Q1/P1 stiffness
+       * (FE::cell_stiffness()), rows and columns of prescribed DoFs
+       * dropped when @p eliminate; returns the number of cells. On the
+       * threads of ThreadTeam::shared() (factor() is called on them), the
+       * matrix the same bit for bit on any number of threads
+       * (coupled_system_cell_matrix.cc). No compress().
+       */
+      unsigned int
+      add_cell_stiffness(dealii::TrilinosWrappers::SparseMatrix    &target,
+                         const std::function<bool(unsigned int)>   &select,
+                         const std::function<double(unsigned int)> &factor,
+                         bool eliminate) const;
       /// The "amg fe" preconditioner's matrix: the FE stiffness of every
       /// cell, cells cut by broken bonds weakened (cut_cell_stiffness).
       void

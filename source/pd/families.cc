@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/config.h>
+#include <pdfem/base/thread_team.h>
 #include <pdfem/pd/families.h>
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 
 namespace pdfem
@@ -105,39 +107,67 @@ namespace pdfem
             sorted[fill[linear(cell_of(x[j]))]++] = j;
       }
 
-      std::vector<unsigned int> found;
-      for (const unsigned int k : owners)
-        {
-          found.clear();
-          const auto            ck = cell_of(x[k]);
-          std::array<long, dim> c;
-          // Visit the 3^dim cells around ck.
-          const unsigned int n_neighbours = dim == 2 ? 9 : 27;
-          for (unsigned int n = 0; n < n_neighbours; ++n)
+      // The owners in chunks on the threads (ThreadTeam::shared()), each
+      // chunk's members into a list of its own, joined in owner order: the
+      // same families on any number of threads. 3D box, 55 539 DoFs: 3.4 %
+      // of the set-up on one thread (perf).
+      constexpr std::size_t chunk    = 256;
+      const std::size_t     n_chunks = (owners.size() + chunk - 1) / chunk;
+      std::vector<std::vector<unsigned int>> chunk_members(n_chunks);
+      std::vector<std::vector<std::size_t>>  chunk_sizes(n_chunks);
+      std::atomic<std::size_t>               next{0};
+      ThreadTeam::shared().run([&](unsigned int) {
+        std::vector<unsigned int> found;
+        for (std::size_t i = next++; i < n_chunks; i = next++)
+          for (std::size_t o = chunk * i;
+               o < std::min(chunk * (i + 1), owners.size());
+               ++o)
             {
-              unsigned int code = n;
-              bool         ok   = true;
-              for (unsigned int d = 0; d < dim; ++d)
+              const unsigned int k = owners[o];
+              found.clear();
+              const auto            ck = cell_of(x[k]);
+              std::array<long, dim> c;
+              // Visit the 3^dim cells around ck.
+              const unsigned int n_neighbours = dim == 2 ? 9 : 27;
+              for (unsigned int n = 0; n < n_neighbours; ++n)
                 {
-                  c[d] = ck[d] + static_cast<long>(code % 3) - 1;
-                  code /= 3;
-                  ok = ok && c[d] >= 0 && c[d] < n_cells[d];
+                  unsigned int code = n;
+                  bool         ok   = true;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    {
+                      c[d] = ck[d] + static_cast<long>(code % 3) - 1;
+                      code /= 3;
+                      ok = ok && c[d] >= 0 && c[d] < n_cells[d];
+                    }
+                  if (!ok)
+                    continue;
+                  const long l = linear(c);
+                  for (std::size_t s = start[l]; s < start[l + 1]; ++s)
+                    {
+                      const unsigned int m = sorted[s];
+                      if (in_family(x[k], x[m], horizon[k], horizon[m]))
+                        found.push_back(m);
+                    }
                 }
-              if (!ok)
-                continue;
-              const long l = linear(c);
-              for (std::size_t s = start[l]; s < start[l + 1]; ++s)
-                {
-                  const unsigned int m = sorted[s];
-                  if (in_family(x[k], x[m], horizon[k], horizon[m]))
-                    found.push_back(m);
-                }
+              std::sort(found.begin(), found.end());
+              chunk_members[i].insert(chunk_members[i].end(),
+                                      found.begin(),
+                                      found.end());
+              chunk_sizes[i].push_back(found.size());
             }
-          std::sort(found.begin(), found.end());
+      });
+      std::size_t n_members = 0;
+      for (const auto &m : chunk_members)
+        n_members += m.size();
+      families.members.reserve(n_members);
+      families.offsets.reserve(owners.size() + 1);
+      for (std::size_t i = 0; i < n_chunks; ++i)
+        {
           families.members.insert(families.members.end(),
-                                  found.begin(),
-                                  found.end());
-          families.offsets.push_back(families.members.size());
+                                  chunk_members[i].begin(),
+                                  chunk_members[i].end());
+          for (const std::size_t n : chunk_sizes[i])
+            families.offsets.push_back(families.offsets.back() + n);
         }
       families.intact.assign(families.members.size(), 1);
       return families;

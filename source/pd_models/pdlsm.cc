@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/thread_team.h>
 #include <pdfem/pd/families.h>
 #include <pdfem/pd_models/interface.h>
 #include <pdfem/pd_models/pdlsm.h>
@@ -8,7 +9,9 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <sstream>
 
@@ -142,19 +145,46 @@ namespace pdfem
 
     template <int dim>
     void
-    fit_every_family(const Region<dim>                      &region,
-                     const std::function<bool(std::size_t)> &fit,
-                     const std::string                      &fit_name,
-                     const double                            a,
-                     const std::string                      &advice)
+    fit_every_family(
+      const Region<dim>                                           &region,
+      const std::function<bool(std::size_t, FitWorkspace<dim> &)> &fit,
+      const std::string                                           &fit_name,
+      const double                                                 a,
+      const std::string                                           &advice)
     {
-      const PD::Families &f     = *region.families;
-      unsigned int        n_bad = 0;
-      std::ostringstream  where;
-      for (std::size_t o = 0; o < f.owners.size(); ++o)
-        if (!fit(o) && n_bad++ == 0)
-          where << " (e.g. the node at (" << (*region.position)[f.owners[o]]
-                << ") with " << f.offsets[o + 1] - f.offsets[o] << " members)";
+      // Chunks of families on the threads, taken in increasing order by
+      // each member: its first bad family is its lowest, and the lowest of
+      // the members' is the one a loop over the families would name.
+      // 3D box, 418 275 DoFs: the fits were 20 % of the set-up on one
+      // thread (perf).
+      const PD::Families            &f        = *region.families;
+      const std::size_t              n_owners = f.owners.size();
+      constexpr std::size_t          chunk    = 32;
+      ThreadTeam                    &team     = ThreadTeam::shared();
+      std::vector<FitWorkspace<dim>> workspace(team.size());
+      std::vector<unsigned int>      member_bad(team.size(), 0);
+      std::vector<std::size_t>       member_first(team.size(), n_owners);
+      std::atomic<std::size_t>       next{0};
+      team.run([&](const unsigned int member) {
+        for (std::size_t first = chunk * next++; first < n_owners;
+             first             = chunk * next++)
+          for (std::size_t o = first; o < std::min(first + chunk, n_owners);
+               ++o)
+            if (!fit(o, workspace[member]) && member_bad[member]++ == 0)
+              member_first[member] = o;
+      });
+      unsigned int n_bad = 0;
+      std::size_t  first = n_owners;
+      for (unsigned int m = 0; m < team.size(); ++m)
+        {
+          n_bad += member_bad[m];
+          first = std::min(first, member_first[m]);
+        }
+      std::ostringstream where;
+      if (n_bad > 0)
+        where << " (e.g. the node at (" << (*region.position)[f.owners[first]]
+              << ") with " << f.offsets[first + 1] - f.offsets[first]
+              << " members)";
       const unsigned int n_bad_total =
         dealii::Utilities::MPI::sum(n_bad, region.comm);
       if (n_bad_total > 0)
@@ -287,13 +317,13 @@ namespace pdfem
              2. * mu * eps;
     }
 
-#define INSTANTIATE(dim)                      \
-  template class PDLSM<dim>;                  \
-  template void fit_every_family<dim>(        \
-    const Region<dim> &,                      \
-    const std::function<bool(std::size_t)> &, \
-    const std::string &,                      \
-    double,                                   \
+#define INSTANTIATE(dim)                                           \
+  template class PDLSM<dim>;                                       \
+  template void fit_every_family<dim>(                             \
+    const Region<dim> &,                                           \
+    const std::function<bool(std::size_t, FitWorkspace<dim> &)> &, \
+    const std::string &,                                           \
+    double,                                                        \
     const std::string &);
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

@@ -103,11 +103,12 @@ namespace pdfem
                             const NodalField<dim> &u) const override;
 
     private:
-      /// Fit the weights of family @p o over its bonds with @p use(j);
-      /// false if it cannot carry the fit (its weights are left as they are).
+      /// Fit the weights of family @p o over its bonds with @p use(j) in
+      /// the work space @p ws; false if it cannot carry the fit (its
+      /// weights are left as they are). Writes family o's bonds only.
       template <typename Use>
       bool
-      fit(std::size_t o, const Use &use);
+      fit(std::size_t o, const Use &use, FitWorkspace<dim> &ws);
 
       double                      weight_factor;
       std::unique_ptr<PDLSM<dim>> pdlsm;
@@ -115,21 +116,25 @@ namespace pdfem
       /// bond is broken, so that the kernel needs no state tests).
       std::vector<Tensor<1, dim>>          weight_a;
       std::vector<SymmetricTensor<2, dim>> bond_block;
-      /// fit()'s work space, kept from family to family.
-      std::vector<Tensor<1, dim>>          xi, a;
-      std::vector<double>                  volume;
-      std::vector<SymmetricTensor<2, dim>> b;
-      std::vector<std::size_t>             bond;
+      /// fit()'s work space for bonds_changed(), kept from family to
+      /// family (initialize() fits on the threads, with one each).
+      FitWorkspace<dim> workspace;
     };
 
     template <int dim>
     template <typename Use>
     bool
-    PDLSMCollocation<dim>::fit(const std::size_t o, const Use &use)
+    PDLSMCollocation<dim>::fit(const std::size_t  o,
+                               const Use         &use,
+                               FitWorkspace<dim> &ws)
     {
-      const PD::Families &f = *this->region.families;
-      const auto         &x = *this->region.position;
-      const unsigned int  k = f.owners[o];
+      auto               &xi = ws.xi, &a = ws.a;
+      auto               &volume = ws.volume;
+      auto               &b      = ws.b;
+      auto               &bond   = ws.bond;
+      const PD::Families &f      = *this->region.families;
+      const auto         &x      = *this->region.position;
+      const unsigned int  k      = f.owners[o];
       xi.clear();
       volume.clear();
       bond.clear();
@@ -163,10 +168,11 @@ namespace pdfem
       // Every family must carry the second-order fit over its whole
       // initial family: if one cannot, the horizon is too small for the
       // mesh (or the weight too narrow).
-      fit_every_family(
+      fit_every_family<dim>(
         r,
-        [&](const std::size_t o) {
-          return fit(o, [](std::size_t) { return true; });
+        [&](const std::size_t o, FitWorkspace<dim> &ws) {
+          return fit(
+            o, [](std::size_t) { return true; }, ws);
         },
         "second-order PDLSM fit",
         weight_factor,
@@ -187,7 +193,10 @@ namespace pdfem
       for (const std::size_t o : changed)
         {
           if (free_surfaces)
-            fit(o, [&](const std::size_t j) { return f.intact[j] != 0; });
+            fit(
+              o,
+              [&](const std::size_t j) { return f.intact[j] != 0; },
+              workspace);
           for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
             if (!f.intact[j])
               bond_block[j] = SymmetricTensor<2, dim>();

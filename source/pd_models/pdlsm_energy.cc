@@ -100,8 +100,12 @@ namespace pdfem
 
     template <int dim>
     bool
-    PDLSMEnergy<dim>::fit(const std::size_t o)
+    PDLSMEnergy<dim>::fit(const std::size_t o, FitWorkspace<dim> &ws)
     {
+      auto &xi = ws.xi, &a = ws.a;
+      auto &volume = ws.volume;
+      auto &b      = ws.b;
+      auto &bond   = ws.bond;
       // The least-squares gradient weights of family o over its intact
       // bonds: a_i (member i), g_k = -sum_i a_i (owner).
       const PD::Families &f     = *this->region.families;
@@ -175,10 +179,10 @@ namespace pdfem
       fitted.assign(f.owners.size(), 0);
       condensed.clear();
       condensed.resize(f.owners.size());
-      fit_every_family(
+      fit_every_family<dim>(
         r,
-        [&](const std::size_t o) {
-          fitted[o] = fit(o);
+        [&](const std::size_t o, FitWorkspace<dim> &ws) {
+          fitted[o] = fit(o, ws);
           return fitted[o] != 0;
         },
         std::string(quadratic_fit ? "quadratic" : "linear") + " gradient fit",
@@ -202,7 +206,7 @@ namespace pdfem
         for (const std::size_t o : changed)
           {
             condense(o);
-            fitted[o] = fit(o);
+            fitted[o] = fit(o, workspace);
           }
     }
 
@@ -224,7 +228,7 @@ namespace pdfem
       // (doc/theory.md §12.3). A family left unable to carry the fit
       // stores no strain energy (its stabilisation bonds remain).
       for (const std::size_t o : changed)
-        fitted[o] = fit(o);
+        fitted[o] = fit(o, workspace);
     }
 
     template <int dim>

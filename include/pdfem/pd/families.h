@@ -46,7 +46,9 @@ namespace pdfem
      * Find the families of @p owners among all nodes @p x with horizons
      * @p horizon; only nodes with @p may_be_member[j] != 0 become members.
      * A cell list with cells of the largest horizon: O(N) for uniform
-     * horizons.
+     * horizons. The owners are searched in chunks on the threads of
+     * ThreadTeam::shared() (so not from within one of its jobs), with the
+     * same result on any number of threads.
      */
     template <int dim>
     Families

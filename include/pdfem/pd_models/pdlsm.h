@@ -32,20 +32,39 @@ namespace pdfem
     double
     parse_weight_factor(dealii::ParameterHandler &prm, const std::string &file);
 
+    /// The work space of one family's fit: its bonds xi, their members'
+    /// volumes, the weights a and b, and the bonds' indices. One per
+    /// thread in fit_every_family().
+    template <int dim>
+    struct FitWorkspace
+    {
+      std::vector<dealii::Tensor<1, dim>>          xi, a;
+      std::vector<double>                          volume;
+      std::vector<dealii::SymmetricTensor<2, dim>> b;
+      std::vector<std::size_t>                     bond;
+    };
+
     /**
-     * Fit every family of @p region with @p fit(o) (false: the family
-     * cannot carry it). Collective: if any family on any rank cannot, an
-     * InputError naming Peridynamics/Horizon factor counts them, shows the
-     * first one, names the fit (@p fit_name, with the weight factor @p a)
-     * and gives @p advice.
+     * Fit every family of @p region with @p fit(o, workspace) (false: the
+     * family cannot carry it). The families run in chunks on the threads
+     * of ThreadTeam::shared(), each thread with a workspace of its own, so
+     * @p fit may write family o's own data (its bonds' and owner's
+     * entries) and nothing shared; each family's fit is computed alone,
+     * so the weights do not depend on the number of threads.
+     *
+     * Collective: if any family on any rank cannot, an InputError naming
+     * Peridynamics/Horizon factor counts them, shows the first one (the
+     * lowest family index, as in a loop over them), names the fit
+     * (@p fit_name, with the weight factor @p a) and gives @p advice.
      */
     template <int dim>
     void
-    fit_every_family(const Region<dim>                      &region,
-                     const std::function<bool(std::size_t)> &fit,
-                     const std::string                      &fit_name,
-                     double                                  a,
-                     const std::string                      &advice);
+    fit_every_family(
+      const Region<dim>                                           &region,
+      const std::function<bool(std::size_t, FitWorkspace<dim> &)> &fit,
+      const std::string                                           &fit_name,
+      double                                                       a,
+      const std::string                                           &advice);
 
     /**
      * Peridynamic least squares minimisation (PDLSM; Madenci, Dorduncu & Gu,

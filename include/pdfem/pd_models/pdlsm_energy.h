@@ -3,6 +3,7 @@
 #define PDFEM_PD_MODELS_PDLSM_ENERGY_H
 
 #include <pdfem/pd_models/interface.h>
+#include <pdfem/pd_models/pdlsm.h>
 
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
@@ -15,9 +16,6 @@ namespace pdfem
 {
   namespace PDModels
   {
-    template <int dim>
-    class PDLSM;
-
     /**
      * The energy form of the PDLSM operator ("pdlsm energy"; issue 16,
      * doc/theory.md §12): the PD forces are the gradient of
@@ -115,10 +113,11 @@ namespace pdfem
 
     private:
       /// Fit the gradient weights of family @p o over its intact bonds
-      /// (and set their Gaussian weights); false if they cannot carry the
-      /// fit (gradient weights left zero).
+      /// (and set their Gaussian weights) in the work space @p ws; false if
+      /// they cannot carry the fit (gradient weights left zero). Writes
+      /// family o's bonds and owner entries only.
       bool
-      fit(std::size_t o);
+      fit(std::size_t o, FitWorkspace<dim> &ws);
       /// Solve for the integration-constraint correction of every family,
       /// once at set-up (collective; pdlsm_energy_correction.cc).
       void
@@ -176,11 +175,9 @@ namespace pdfem
       /// iterations.
       double       constraint_residual   = 0.;
       unsigned int correction_iterations = 0;
-      /// fit()'s work space.
-      std::vector<dealii::Tensor<1, dim>>          xi, a;
-      std::vector<double>                          volume;
-      std::vector<dealii::SymmetricTensor<2, dim>> b;
-      std::vector<std::size_t>                     bond;
+      /// fit()'s work space after set-up (initialize() fits on the
+      /// threads, with one each).
+      FitWorkspace<dim> workspace;
     };
   } // namespace PDModels
 } // namespace pdfem
