@@ -13,8 +13,8 @@ The FCBM paper's dog-bone (specs/002 §4.1) gives its dimensions only in a figur
 not have; this shape keeps what the text says (lateral extent about 6 cm, height about 12-13 cm,
 two lateral through-holes, delta = 3 mm small against the holes) and is stated as ours.
 
-The grid: cubes of side h = 1 mm / F (F = --cells-per-mm, default 1), the lattice x = (i - (n - 1)/2) h
-over 60 F lattice points in x and y, z = k h. A cube is kept when its centre is inside the shape
+The grid: cubes of side h = 1 mm / F (F = --cells-per-mm, default 1; 3 F must be whole, e.g. 4/3 for
+h = 0.75 mm), the lattice x = (i - (n - 1)/2) h over 60 F lattice points in x and y, z = k h. A cube is kept when its centre is inside the shape
 (the staircase of the curved surfaces is the same for every model run on the mesh). The nodes are
 the vertices of the kept cubes.
 
@@ -61,7 +61,7 @@ def main(argv):
     i = 0
     while i < len(argv):
         if argv[i] == "--cells-per-mm":
-            per_mm = int(argv[i + 1])
+            per_mm = float(argv[i + 1])
             i += 2
         elif argv[i] == "--layers":
             layers = True
@@ -69,12 +69,16 @@ def main(argv):
         else:
             args.append(argv[i])
             i += 1
-    if len(args) != 1 or per_mm < 1:
-        sys.exit("usage: python3 dog_bone_mesh.py [--cells-per-mm N >= 1] [--layers] OUTPUT.msh")
+    # 3 mm (the layers) and 60 mm (the lattice) must be whole numbers of cubes.
+    if len(args) != 1 or per_mm <= 0 or abs(3 * per_mm - round(3 * per_mm)) > 1e-9:
+        sys.exit("usage: python3 dog_bone_mesh.py [--cells-per-mm F (3 F a whole number: 1, 4/3 = "
+                 "1.3333333333333333, 2, ...)] [--layers] OUTPUT.msh")
+    def whole(mm):
+        return int(round(mm * per_mm))
     h = 1.0 / per_mm
-    n = 60 * per_mm  # lattice points in x and y
-    k_lo = -3 * per_mm if layers else 0
-    k_hi = (120 if layers else 117) * per_mm  # last lattice plane
+    n = whole(60)  # lattice points in x and y
+    k_lo = -whole(3) if layers else 0
+    k_hi = whole(120 if layers else 117)  # last lattice plane
 
     def x_of(i):
         return (i - (n - 1) / 2.0) * h
@@ -105,9 +109,9 @@ def main(argv):
             faces.append((1, [c[0], c[3], c[2], c[1]]))
         if c[4][2] == k_hi:
             faces.append((2, [c[4], c[5], c[6], c[7]]))
-    k_mid = int(round(58.5 * per_mm))
+    k_mid = whole(58.5)
     i_a = (n - 1) // 2
-    pins = [(3, (i_a, i_a, k_mid)), (4, (i_a + 10 * per_mm, i_a, k_mid))]
+    pins = [(3, (i_a, i_a, k_mid)), (4, (i_a + whole(10), i_a, k_mid))]
     for _, p in pins:
         if p not in node_id:
             sys.exit("dog_bone_mesh.py: a pin is not a node of the mesh")
@@ -115,7 +119,7 @@ def main(argv):
         for p in node_id:
             if p[2] <= 0:
                 pins.append((5, p))
-            elif p[2] >= 117 * per_mm:
+            elif p[2] >= whole(117):
                 pins.append((6, p))
 
     with open(args[0], "w") as out:
