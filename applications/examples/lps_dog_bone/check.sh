@@ -19,6 +19,7 @@ while (($#)); do
   esac
 done
 [[ -n "$pdfem" && -n "$work" ]] || { echo "usage: check.sh --pdfem PDFEM --work DIR [...]" >&2; exit 2; }
+command -v python3 > /dev/null || { echo "check.sh: no python3: skipped"; exit 77; }
 mkdir -p "$work"
 python3 "$here/dog_bone_mesh.py" --cells-per-mm "$per_mm" --layers "$work/body.msh"
 "$pdfem" "$here/lps_dog_bone.prm" --output "$work/pd" --quiet \
