@@ -145,6 +145,27 @@ namespace pdfem
 
     template <int dim>
     void
+    FitWorkspace<dim>::gather(const Region<dim> &region,
+                              const std::size_t  o,
+                              const bool         intact_only)
+    {
+      const PD::Families &f = *region.families;
+      const auto         &x = *region.position;
+      const unsigned int  k = f.owners[o];
+      xi.clear();
+      volume.clear();
+      bond.clear();
+      for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+        if (!intact_only || f.intact[j])
+          {
+            xi.push_back(x[f.members[j]] - x[k]);
+            volume.push_back((*region.volume)[f.members[j]]);
+            bond.push_back(j);
+          }
+    }
+
+    template <int dim>
+    void
     fit_every_family(
       const Region<dim>                                           &region,
       const std::function<bool(std::size_t, FitWorkspace<dim> &)> &fit,
@@ -318,6 +339,7 @@ namespace pdfem
     }
 
 #define INSTANTIATE(dim)                                           \
+  template struct FitWorkspace<dim>;                               \
   template class PDLSM<dim>;                                       \
   template void fit_every_family<dim>(                             \
     const Region<dim> &,                                           \

@@ -103,12 +103,12 @@ namespace pdfem
                             const NodalField<dim> &u) const override;
 
     private:
-      /// Fit the weights of family @p o over its bonds with @p use(j) in
-      /// the work space @p ws; false if it cannot carry the fit (its
-      /// weights are left as they are). Writes family o's bonds only.
-      template <typename Use>
+      /// Fit the weights of family @p o over its bonds (its intact ones
+      /// alone with @p intact_only) in the work space @p ws; false if it
+      /// cannot carry the fit (its weights are left as they are). Writes
+      /// family o's bonds only.
       bool
-      fit(std::size_t o, const Use &use, FitWorkspace<dim> &ws);
+      fit(std::size_t o, bool intact_only, FitWorkspace<dim> &ws);
 
       double                      weight_factor;
       std::unique_ptr<PDLSM<dim>> pdlsm;
@@ -122,29 +122,16 @@ namespace pdfem
     };
 
     template <int dim>
-    template <typename Use>
     bool
     PDLSMCollocation<dim>::fit(const std::size_t  o,
-                               const Use         &use,
+                               const bool         intact_only,
                                FitWorkspace<dim> &ws)
     {
-      auto               &xi = ws.xi, &a = ws.a;
-      auto               &volume = ws.volume;
-      auto               &b      = ws.b;
-      auto               &bond   = ws.bond;
-      const PD::Families &f      = *this->region.families;
-      const auto         &x      = *this->region.position;
-      const unsigned int  k      = f.owners[o];
-      xi.clear();
-      volume.clear();
-      bond.clear();
-      for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
-        if (use(j))
-          {
-            xi.push_back(x[f.members[j]] - x[k]);
-            volume.push_back((*this->region.volume)[f.members[j]]);
-            bond.push_back(j);
-          }
+      ws.gather(this->region, o, intact_only);
+      const auto        &xi = ws.xi, &volume = ws.volume;
+      const auto        &bond = ws.bond;
+      auto              &a = ws.a, &b = ws.b;
+      const unsigned int k = this->region.families->owners[o];
       if (!pdlsm->compute_weights(xi, volume, (*this->region.horizon)[k], a, b))
         return false;
       const double V = (*this->region.pd_volume)[k];
@@ -171,8 +158,7 @@ namespace pdfem
       fit_every_family<dim>(
         r,
         [&](const std::size_t o, FitWorkspace<dim> &ws) {
-          return fit(
-            o, [](std::size_t) { return true; }, ws);
+          return fit(o, false, ws);
         },
         "second-order PDLSM fit",
         weight_factor,
@@ -193,10 +179,7 @@ namespace pdfem
       for (const std::size_t o : changed)
         {
           if (free_surfaces)
-            fit(
-              o,
-              [&](const std::size_t j) { return f.intact[j] != 0; },
-              workspace);
+            fit(o, true, workspace);
           for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
             if (!f.intact[j])
               bond_block[j] = SymmetricTensor<2, dim>();

@@ -102,33 +102,25 @@ namespace pdfem
     bool
     PDLSMEnergy<dim>::fit(const std::size_t o, FitWorkspace<dim> &ws)
     {
-      auto &xi = ws.xi, &a = ws.a;
-      auto &volume = ws.volume;
-      auto &b      = ws.b;
-      auto &bond   = ws.bond;
       // The least-squares gradient weights of family o over its intact
       // bonds: a_i (member i), g_k = -sum_i a_i (owner).
+      ws.gather(this->region, o, true);
+      const auto         &xi = ws.xi, &volume = ws.volume;
+      const auto         &bond = ws.bond;
+      auto               &a = ws.a, &b = ws.b;
       const PD::Families &f     = *this->region.families;
-      const auto         &x     = *this->region.position;
-      const unsigned int  k     = f.owners[o];
-      const double        delta = (*this->region.horizon)[k];
-      xi.clear();
-      volume.clear();
-      bond.clear();
-      const double inv_a2 = 1. / (weight_factor * weight_factor);
+      const double        delta = (*this->region.horizon)[f.owners[o]];
       for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
         {
           weight[j]      = Tensor<1, dim>();
           bond_weight[j] = 0.;
           in_fit[j]      = f.intact[j];
-          if (f.intact[j])
-            {
-              xi.push_back(x[f.members[j]] - x[k]);
-              volume.push_back((*this->region.volume)[f.members[j]]);
-              bond.push_back(j);
-              const Tensor<1, dim> s = xi.back() / delta;
-              bond_weight[j] = std::exp(-(s * s) * inv_a2) * volume.back();
-            }
+        }
+      const double inv_a2 = 1. / (weight_factor * weight_factor);
+      for (std::size_t i = 0; i < bond.size(); ++i)
+        {
+          const Tensor<1, dim> s = xi[i] / delta;
+          bond_weight[bond[i]]   = std::exp(-(s * s) * inv_a2) * volume[i];
         }
       owner_weight[o] = Tensor<1, dim>();
       bool fitted     = false;

@@ -38,6 +38,11 @@ namespace pdfem
     template <int dim>
     struct FitWorkspace
     {
+      /// xi, volume and bond of family @p o of @p region: all its bonds,
+      /// or its intact ones alone (@p intact_only).
+      void
+      gather(const Region<dim> &region, std::size_t o, bool intact_only);
+
       std::vector<dealii::Tensor<1, dim>>          xi, a;
       std::vector<double>                          volume;
       std::vector<dealii::SymmetricTensor<2, dim>> b;
