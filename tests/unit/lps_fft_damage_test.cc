@@ -51,17 +51,11 @@ namespace
       GridGenerator::subdivided_hyper_L(
         tria, {20u, 20u}, Point<2>(), Point<2>(1., 1.), {-8, -8});
       const std::vector<bool> pd(tria.n_active_cells(), true);
-      Coupling::Settings<2>   settings;
-      settings.material.youngs_modulus = 1e3;
-      settings.material.poissons_ratio = 0.25;
-      settings.material.plane_stress   = true;
-      settings.material.density        = 1.;
-      settings.horizon_factor          = 3.015;
-      Entries all                      = {{"LPS/Nodal volumes", "uniform"}};
+      Entries                 all = {{"LPS/Nodal volumes", "uniform"}};
       all.insert(all.end(), entries.begin(), entries.end());
-      settings.pd_model           = make_model<2>("lps fft", all);
-      settings.linear_solver.type = "direct";
-      settings.source_file        = "test.prm";
+      Coupling::Settings<2> settings =
+        body_settings<2>(0.25, 3.015, make_model<2>("lps fft", all));
+      settings.source_file = "test.prm";
       system = std::make_unique<Coupling::CoupledSystem<2>>(tria, pd, settings);
       system->initialize_vector(u);
     }

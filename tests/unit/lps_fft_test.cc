@@ -74,15 +74,9 @@ namespace
       std::vector<bool> pd(tria.n_active_cells());
       for (const auto &cell : tria.active_cell_iterators())
         pd[cell->active_cell_index()] = body.is_pd(cell->center());
-      Coupling::Settings<dim> settings;
-      settings.material.youngs_modulus = 1e3;
-      settings.material.poissons_ratio = nu;
-      settings.material.plane_stress   = !plane_strain;
-      settings.material.density        = 1.;
-      settings.horizon_factor          = m;
-      settings.pd_model                = make_model<dim>(name, entries);
-      settings.linear_solver.type      = "direct";
-      settings.source_file             = "test.prm";
+      Coupling::Settings<dim> settings =
+        body_settings<dim>(nu, m, make_model<dim>(name, entries), plane_strain);
+      settings.source_file = "test.prm";
       system =
         std::make_unique<Coupling::CoupledSystem<dim>>(tria, pd, settings);
     }

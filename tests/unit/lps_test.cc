@@ -57,14 +57,8 @@ namespace
       std::vector<bool> pd(tria.n_active_cells());
       for (const auto &cell : tria.active_cell_iterators())
         pd[cell->active_cell_index()] = is_pd(cell->center());
-      Coupling::Settings<dim> settings;
-      settings.material.youngs_modulus = 1e3;
-      settings.material.poissons_ratio = nu;
-      settings.material.plane_stress   = !plane_strain;
-      settings.material.density        = 1.;
-      settings.horizon_factor          = m;
-      settings.pd_model                = make_model<dim>("lps", entries);
-      settings.linear_solver.type      = "direct";
+      const Coupling::Settings<dim> settings = body_settings<dim>(
+        nu, m, make_model<dim>("lps", entries), plane_strain);
       system =
         std::make_unique<Coupling::CoupledSystem<dim>>(tria, pd, settings);
       spacing = 1. / n;

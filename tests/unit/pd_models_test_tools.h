@@ -60,6 +60,27 @@ namespace
     return model;
   }
 
+  /// The settings of the tests' PD bodies: E = 1e3, Poisson's ratio @p nu,
+  /// density 1, plane stress (plane strain with @p plane_strain), horizon
+  /// factor @p m, the PD model @p model, the direct solver.
+  template <int dim>
+  Coupling::Settings<dim>
+  body_settings(const double                                     nu,
+                const double                                     m,
+                const std::shared_ptr<PDModels::Interface<dim>> &model,
+                const bool plane_strain = false)
+  {
+    Coupling::Settings<dim> settings;
+    settings.material.youngs_modulus = 1e3;
+    settings.material.poissons_ratio = nu;
+    settings.material.plane_stress   = !plane_strain;
+    settings.material.density        = 1.;
+    settings.horizon_factor          = m;
+    settings.pd_model                = model;
+    settings.linear_solver.type      = "direct";
+    return settings;
+  }
+
   /// A 1 x 1 plate of 8 x 8 jittered quads, cells left of @p pd_left_of
   /// PD, nu = 1/3 (the bond-based value), with @p model.
   struct Plate

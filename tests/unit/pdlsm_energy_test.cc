@@ -62,18 +62,14 @@ namespace
       std::vector<bool> pd(tria.n_active_cells());
       for (const auto &cell : tria.active_cell_iterators())
         pd[cell->active_cell_index()] = is_pd(cell->center());
-      Coupling::Settings<dim> settings;
-      settings.material.youngs_modulus = 1e3;
-      settings.material.poissons_ratio = 0.3;
-      settings.material.plane_stress   = true;
-      settings.material.density        = 1.;
-      settings.horizon_factor          = horizon_factor;
-      auto with_weight                 = entries;
+      auto with_weight = entries;
       with_weight.insert(with_weight.begin(),
                          {"Weight factor", simplex ? "0.25" : "0.33"});
-      settings.pd_model           = make_model<dim>(model_name, with_weight);
-      settings.cracks             = cracks;
-      settings.linear_solver.type = "direct";
+      Coupling::Settings<dim> settings =
+        body_settings<dim>(0.3,
+                           horizon_factor,
+                           make_model<dim>(model_name, with_weight));
+      settings.cracks = cracks;
       system =
         std::make_unique<Coupling::CoupledSystem<dim>>(tria, pd, settings);
     }
