@@ -145,6 +145,17 @@ namespace pdfem
                            "pdlsm; " +
                              plugins.model_name + " treats crack faces itself",
                            "'cut bonds', or Peridynamics/Model = pdlsm");
+        // Type = auto chooses the preconditioner itself.
+        if (linear_solver.preconditioner == "pd model" &&
+            linear_solver.iterative() && linear_solver.type != "auto" &&
+            !layout.preconditioner)
+          throw InputError(file,
+                           "Linear solver/Preconditioner",
+                           "'pd model' asks the PD model for an approximate "
+                           "inverse of its own, and " +
+                             plugins.model_name + " has none",
+                           "amg fe, amg or ilu, or Peridynamics/Model = lps "
+                           "fft");
         if (!layout.tangent && plugins.driver->needs_tangent())
           check_forces_only_model(file,
                                   plugins.model_name,
