@@ -389,6 +389,7 @@ namespace pdfem
       op->set_masks(body, lambda);
       op->damage(d_box, normalisation);
       u_box.assign(dim * n_box, 0.);
+      r_box.clear(); // to_box() zeroes it at its first use
       W_box.clear();
       // The paper's calibration (specs/002 eqs. 50-51): a delta-thick layer
       // of dead nodes releases A delta W_c = A G_0.
@@ -410,19 +411,33 @@ namespace pdfem
     }
 
     template <int dim>
+    template <typename Value>
+    void
+    LpsFft<dim>::to_box(const Value &value, std::vector<double> &box) const
+    {
+      // One rank's owners are all the body's nodes: the entries off them
+      // stay 0 from the first call. With several ranks the others' are
+      // summed in.
+      const bool parallel =
+        Utilities::MPI::n_mpi_processes(this->region.comm) > 1;
+      box.resize(dim * n_box, 0.);
+      if (parallel)
+        std::fill(box.begin(), box.end(), 0.);
+      for (std::size_t o = 0; o < box_node.size(); ++o)
+        for (unsigned int c = 0; c < dim; ++c)
+          box[c * n_box + box_node[o]] = value(o, c);
+      if (parallel)
+        Utilities::MPI::sum(box, this->region.comm, box);
+    }
+
+    template <int dim>
     void
     LpsFft<dim>::gather(const NodalField<dim> &u)
     {
       const PD::Families &f = *this->region.families;
-      const bool          parallel =
-        Utilities::MPI::n_mpi_processes(this->region.comm) > 1;
-      if (parallel)
-        std::fill(u_box.begin(), u_box.end(), 0.);
-      for (std::size_t o = 0; o < f.owners.size(); ++o)
-        for (unsigned int c = 0; c < dim; ++c)
-          u_box[c * n_box + box_node[o]] = u(f.owners[o], c);
-      if (parallel)
-        Utilities::MPI::sum(u_box, this->region.comm, u_box);
+      to_box([&](const std::size_t  o,
+                 const unsigned int c) { return u(f.owners[o], c); },
+             u_box);
     }
 
     template <int dim>
@@ -440,16 +455,12 @@ namespace pdfem
     {
       // The stiffness of the owners' rows is Delta V (-dL/du): its periodic
       // inverse is G^-1 / Delta V. Every rank holds the whole grid.
-      const PD::Families &f = *this->region.families;
-      r_box.assign(dim * n_box, 0.);
-      for (std::size_t o = 0; o < f.owners.size(); ++o)
-        for (unsigned int c = 0; c < dim; ++c)
-          r_box[c * n_box + box_node[o]] = r[dim * o + c];
-      if (Utilities::MPI::n_mpi_processes(this->region.comm) > 1)
-        Utilities::MPI::sum(r_box, this->region.comm, r_box);
+      to_box([&](const std::size_t  o,
+                 const unsigned int c) { return r[dim * o + c]; },
+             r_box);
       op->apply_periodic_inverse(r_box, z_box);
-      z.resize(dim * f.owners.size());
-      for (std::size_t o = 0; o < f.owners.size(); ++o)
+      z.resize(dim * box_node.size());
+      for (std::size_t o = 0; o < box_node.size(); ++o)
         for (unsigned int c = 0; c < dim; ++c)
           z[dim * o + c] = z_box[c * n_box + box_node[o]] / node_volume;
     }

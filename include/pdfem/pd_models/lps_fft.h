@@ -291,6 +291,13 @@ namespace pdfem
       void
       gather(const NodalField<dim> &u);
 
+      /// value(o, c) of every owner o and component c into @p box
+      /// (dim N_box, component-major; 0 off the owners), summed over the
+      /// ranks (one allreduce).
+      template <typename Value>
+      void
+      to_box(const Value &value, std::vector<double> &box) const;
+
       NodeGrid<dim>                 body_grid;
       std::array<unsigned int, dim> box{};
       std::size_t                   n_box = 0;
