@@ -193,7 +193,7 @@ namespace pdfem
       // the in-place additions 0.9 % (perf). Only a
       // DoF leaving the held set, or a newly prescribed one, rebuilds the
       // whole matrix. 'pd model' preconditions without it: none is made.
-      if (settings.linear_solver.preconditioner == "pd model")
+      if (settings.linear_solver.model_preconditioner())
         {
           auxiliary_stale = false;
           return;

@@ -203,7 +203,7 @@ namespace pdfem
       }
       auxiliary.clear();
       n_matrix_entries = 0;
-      if (matrix_free && settings.linear_solver.preconditioner == "pd model")
+      if (matrix_free && settings.linear_solver.model_preconditioner())
         {
           if (!layout.preconditioner ||
               std::find(cell_pd.begin(), cell_pd.end(), false) != cell_pd.end())

@@ -126,7 +126,7 @@ namespace pdfem
                                             const Vector &r,
                                             const double  allowed_residual)
     {
-      if (matrix_free && settings.linear_solver.preconditioner == "pd model")
+      if (matrix_free && settings.linear_solver.model_preconditioner())
         return solver.solve([this](Vector &y, const Vector &x) { vmult(y, x); },
                             du,
                             r,

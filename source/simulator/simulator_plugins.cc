@@ -146,9 +146,8 @@ namespace pdfem
                              plugins.model_name + " treats crack faces itself",
                            "'cut bonds', or Peridynamics/Model = pdlsm");
         // Type = auto chooses the preconditioner itself.
-        if (linear_solver.preconditioner == "pd model" &&
-            linear_solver.iterative() && linear_solver.type != "auto" &&
-            !layout.preconditioner)
+        if (linear_solver.model_preconditioner() &&
+            linear_solver.type != "auto" && !layout.preconditioner)
           throw InputError(file,
                            "Linear solver/Preconditioner",
                            "'pd model' asks the PD model for an approximate "

@@ -72,6 +72,14 @@ namespace pdfem
               bool forces_only_model    = false,
               bool model_preconditioner = false) const;
 
+      /// Preconditioner = pd model: the PD model's own approximate inverse
+      /// (matrix-free; no auxiliary matrix).
+      bool
+      model_preconditioner() const
+      {
+        return iterative() && preconditioner == "pd model";
+      }
+
       /// Matrix-free CG: solves with products of the operator alone (the
       /// 'amg fe' preconditioner without its block-Jacobi correction, or
       /// 'pd model'), so that a linear, symmetric PD model of forces only
