@@ -66,11 +66,21 @@ namespace pdfem
       for (const unsigned int k : owned_nodes)
         if (is_pd[k])
           owners.push_back(k);
-      std::vector<std::uint8_t> may_be_member(n_nodes, 1);
-      if (!settings.fe_nodes_in_families)
-        may_be_member = is_pd;
-      families = PD::find_families(x, horizon, owners, may_be_member);
-      if (layout.pairwise && settings.fe_nodes_in_families)
+      if (!layout.bonds)
+        {
+          // A model without bonds: one family per owner, no members.
+          families         = PD::Families();
+          families.owners  = owners;
+          families.offsets = std::vector<std::size_t>(owners.size() + 1, 0);
+        }
+      else
+        {
+          std::vector<std::uint8_t> may_be_member(n_nodes, 1);
+          if (!settings.fe_nodes_in_families)
+            may_be_member = is_pd;
+          families = PD::find_families(x, horizon, owners, may_be_member);
+        }
+      if (layout.bonds && layout.pairwise && settings.fe_nodes_in_families)
         {
           // The reverse of the PD-FE bonds: each owned FE node within a
           // horizon of PD nodes owns the family of those PD nodes.
@@ -166,6 +176,7 @@ namespace pdfem
 
       // Ghosts: every DoF of a family member or of a vertex of an owned
       // cell (marked, not collected: families list millions of members).
+      // A model without bonds gathers its neighbours itself.
       std::vector<std::uint8_t> needed(dofs.n_dofs(), 0);
       for (const auto &cell : dofs.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -289,7 +300,7 @@ namespace pdfem
       for (std::size_t o = 0; o < families.owners.size(); ++o)
         decoupled[o] =
           fragment[o] ||
-          (!is_fe[families.owners[o]] &&
+          (layout.bonds && !is_fe[families.owners[o]] &&
            std::none_of(families.intact.begin() + families.offsets[o],
                         families.intact.begin() + families.offsets[o + 1],
                         [](const std::uint8_t i) { return i != 0; }));

@@ -150,6 +150,12 @@ namespace pdfem
     CoupledSystem<dim>::break_bonds_if(
       const std::function<bool(unsigned int, unsigned int)> &breaks)
     {
+      if (!impl->layout.bonds || !impl->layout.breakable_bonds)
+        throw InputError(impl->settings.source_file,
+                         "Peridynamics/Model",
+                         "this PD model cannot break single bonds (it has "
+                         "node masks only)",
+                         "a PD model with bonds, e.g. lps instead of lps fft");
       const PD::Families &f = impl->families;
       return impl->break_bonds_where(
         [&](const std::size_t o, const std::size_t b) {

@@ -80,16 +80,18 @@ namespace pdfem
     void
     CoupledSystem<dim>::Impl::make_pd_chunks()
     {
-      // About 8 chunks per thread with equal numbers of bonds: the threads
+      // About 8 chunks per thread with equal work, one unit per owner and
+      // per bond (owners only for a model without bonds): the threads
       // steal chunks, so one that also ran the FE product takes fewer.
       const std::size_t n_owners = families.owners.size();
       const std::size_t n_chunks =
         std::min<std::size_t>(8 * ThreadTeam::shared().size(), n_owners);
       pd_chunks.assign(1, 0);
-      const double per_chunk = static_cast<double>(families.n_bonds()) /
-                               std::max<std::size_t>(1, n_chunks);
+      const double per_chunk =
+        static_cast<double>(families.n_bonds() + n_owners) /
+        std::max<std::size_t>(1, n_chunks);
       for (std::size_t o = 0; o < n_owners; ++o)
-        if (families.offsets[o + 1] >= per_chunk * pd_chunks.size() &&
+        if (families.offsets[o + 1] + o + 1 >= per_chunk * pd_chunks.size() &&
             pd_chunks.size() < n_chunks)
           pd_chunks.push_back(o + 1);
       if (pd_chunks.back() != n_owners)

@@ -63,8 +63,9 @@ namespace pdfem
       // never write the same node.
       const std::size_t               n_owners = s.families.owners.size();
       std::vector<Tensor<2, dim>>     owner_gradient(n_owners);
-      const PDModels::NodalField<dim> field     = s.nodal_field(s.u_ghosted);
-      const auto                      pd_owners = [&](const std::size_t first,
+      const PDModels::NodalField<dim> field = s.nodal_field(s.u_ghosted);
+      s.model->prepare_results(field);
+      const auto pd_owners = [&](const std::size_t first,
                                  const std::size_t last) {
         for (std::size_t o = first; o < last; ++o)
           {

@@ -267,6 +267,7 @@ namespace pdfem
       l.tangent          = false;
       l.breakable_bonds  = false;
       l.preconditioner   = true;
+      l.bonds            = false;
       return l;
     }
 
@@ -333,47 +334,9 @@ namespace pdfem
       for (std::size_t o = 0; o < f.owners.size(); ++o)
         box_node[o] = at(f.owners[o]);
 
-      // Every family must be the grid's discrete horizon within the body
-      // (the bonds the FFT sums), all intact.
-      const auto offsets    = FFT::horizon_offsets(grid, delta);
-      bool       on_horizon = false;
-      for (const auto &p : offsets)
-        on_horizon = on_horizon || std::abs(p.length - delta) < 1e-8 * delta;
-      for (std::size_t o = 0; o < f.owners.size(); ++o)
-        {
-          const auto &i       = body_grid.index[f.owners[o]];
-          std::size_t n_bonds = 0;
-          for (const auto &p : offsets)
-            {
-              std::array<unsigned int, dim> j;
-              bool                          inside = true;
-              for (unsigned int c = 0; c < dim; ++c)
-                {
-                  const long jc = long(i[c]) + p.p[c];
-                  inside = inside && jc >= 0 && jc < long(body_grid.n[c]);
-                  j[c]   = static_cast<unsigned int>(std::max(0l, jc));
-                }
-              n_bonds += inside && body[grid.node(j)] > 0.;
-            }
-          std::size_t n_intact = 0;
-          for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
-            n_intact += f.intact[b];
-          if (n_bonds != f.offsets[o + 1] - f.offsets[o] || n_intact != n_bonds)
-            throw InputError(
-              r.source_file,
-              model,
-              "lps fft: the family of node " + std::to_string(f.owners[o]) +
-                " at " + point_text(x[f.owners[o]]) + " has " +
-                std::to_string(n_intact) +
-                " intact bonds, the grid's horizon " + std::to_string(n_bonds),
-              std::string(on_horizon ? "a horizon factor off whole "
-                                       "spacings (e.g. 3.015: bonds of "
-                                       "exactly a horizon hang on the "
-                                       "mesh's round-off), " :
-                                       "") +
-                "a uniform grid without cut bonds, or Model "
-                "= lps");
-        }
+      // The bonds of the output's gradient fit: the grid's discrete horizon
+      // (the bonds the FFT sums).
+      stencil = FFT::horizon_offsets(grid, delta);
 
       FFT::Material material;
       material.model         = FFT::Model::lps;
@@ -543,17 +506,53 @@ namespace pdfem
     }
 
     template <int dim>
-    Tensor<2, dim>
-    LpsFft<dim>::displacement_gradient(const std::size_t      o,
-                                       const NodalField<dim> &u) const
+    void
+    LpsFft<dim>::prepare_results(const NodalField<dim> &u)
     {
-      const PD::Families &f = *this->region.families;
-      const auto         &x = *this->region.position;
-      const unsigned int  k = f.owners[o];
-      return fitted_gradient(this->region, o, u, [&](const std::size_t j) {
-        const double L = (x[f.members[j]] - x[k]).norm();
-        return (inverse_distance ? 1. / L : 1.) * L * L;
-      });
+      gather(u);
+    }
+
+    template <int dim>
+    Tensor<2, dim>
+    LpsFft<dim>::displacement_gradient(const std::size_t o,
+                                       const NodalField<dim> &) const
+    {
+      // The fit of "lps" over the grid's bonds within the body, each with
+      // omega Delta V: G = [sum omega eta (x) xi] [sum omega xi (x) xi]^-1,
+      // eta = u(x + xi) - u(x), from the displacements of the last
+      // prepare_results() (the box holds every node's).
+      const auto       &i = body_grid.index[this->region.families->owners[o]];
+      const std::size_t k = box_node[o];
+      const FFT::Grid<dim> &grid = op->grid();
+      Tensor<2, dim>        A, B;
+      for (const auto &p : stencil)
+        {
+          std::array<unsigned int, dim> j;
+          bool                          inside = true;
+          for (unsigned int c = 0; c < dim && inside; ++c)
+            {
+              const long jc = long(i[c]) + p.p[c];
+              inside        = jc >= 0 && jc < long(body_grid.n[c]);
+              j[c]          = static_cast<unsigned int>(jc);
+            }
+          if (!inside)
+            continue;
+          const std::size_t m = grid.node(j);
+          if (!(body[m] > 0.))
+            continue;
+          Tensor<1, dim> xi, eta;
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              xi[c]  = p.xi[c];
+              eta[c] = u_box[c * n_box + m] - u_box[c * n_box + k];
+            }
+          const double w = inverse_distance ? 1. / p.length : 1.;
+          A += w * outer_product(eta, xi);
+          B += w * outer_product(xi, xi);
+        }
+      if (std::abs(determinant(B)) <= 1e-12 * std::pow(trace(B), dim))
+        return Tensor<2, dim>();
+      return A * invert(B);
     }
 
     template <int dim>

@@ -9,6 +9,8 @@
 //   and 3D;
 // - the grid is detected from the node positions, and the box leaves a gap
 //   of more than a horizon;
+// - the system stores no bonds, and the output's gradient (fitted on the
+//   grid) is exact for affine fields, also on 2 ranks;
 // - refused with one InputError naming Peridynamics/Model: nodes off a
 //   uniform grid (jittered), FE cells, Nodal volumes = cells, broken bonds
 //   and the tangent.
@@ -168,6 +170,49 @@ namespace
     EXPECT_EQ(grid.n[1], 11u);
     EXPECT_EQ(model.box_size()[0], 25u); // 5^2
     EXPECT_EQ(model.box_size()[1], 15u); // 3 5
+  }
+
+  /// The largest |grad u - G| over the nodes of @p body (lps fft, m =
+  /// 3.015) at u = G x + c, and the number of bonds the system stores.
+  template <int dim>
+  std::pair<double, unsigned long>
+  gradient_error_of_affine_field(const Body<dim>                &body,
+                                 const std::vector<std::string> &u_of_x,
+                                 const Tensor<2, dim>           &G)
+  {
+    System<dim> s(body, "lps fft", uniform, 0.3, 3.015);
+    Vector      u;
+    s.system->initialize_vector(u);
+    s.system->interpolate(u_of_x, "test", u);
+    const auto results = s.system->nodal_results(u);
+    double     error   = 0.;
+    for (const auto &grad : results.displacement_gradient)
+      error = std::max(error, (grad - G).norm());
+    return {error, s.system->size().n_bonds};
+  }
+
+  TEST(LpsFftWithoutBonds, StoresNoBondsAndFitsTheGradientOnItsGrid)
+  {
+    // No bonds: the families list their owners only, whatever the
+    // horizon. The output's gradient, fitted over the grid's bonds within
+    // the body, is exact for an affine field at every node, on every rank
+    // (the neighbours' displacements come from the whole box).
+    Body<2>      l_shape{{20, 10}, Point<2>(2., 1.), {-8, -4}};
+    Tensor<2, 2> G2;
+    G2[0][0] = 1e-3, G2[0][1] = -2e-3, G2[1][0] = 5e-4, G2[1][1] = 3e-3;
+    const auto [error2, bonds2] = gradient_error_of_affine_field<2>(
+      l_shape, {"1e-3*x - 2e-3*y + 0.1", "5e-4*x + 3e-3*y - 0.2"}, G2);
+    EXPECT_LT(error2, 1e-14);
+    EXPECT_EQ(bonds2, 0u);
+
+    Body<3>      box{{6, 5, 4}, Point<3>(0.6, 0.5, 0.4), {}};
+    Tensor<2, 3> G3;
+    G3[0][0] = 1e-3, G3[0][2] = 2e-3, G3[1][1] = -1e-3, G3[2][0] = 4e-3;
+    G3[2][1]                    = 5e-4;
+    const auto [error3, bonds3] = gradient_error_of_affine_field<3>(
+      box, {"1e-3*x + 2e-3*z", "-1e-3*y + 1", "4e-3*x + 5e-4*y"}, G3);
+    EXPECT_LT(error3, 1e-14);
+    EXPECT_EQ(bonds3, 0u);
   }
 
   /// The InputError's message of @p make(), "" if none is thrown.

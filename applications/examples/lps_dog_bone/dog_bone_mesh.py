@@ -66,6 +66,9 @@ def main(argv):
         elif argv[i] == "--layers":
             layers = True
             i += 1
+        elif argv[i].startswith("-"):
+            args = []  # an unknown option (e.g. --help): the usage below
+            break
         else:
             args.append(argv[i])
             i += 1

@@ -136,6 +136,15 @@ namespace pdfem
       /// none. A static run then needs it prescribed at every PD node that
       /// no FE cell holds (CoupledSystem::unheld_component()).
       int stiffless_component = -1;
+      /// The model reads the bonds of the families (Region::families lists
+      /// every node within a horizon of each owner). A model that finds its
+      /// neighbours on a grid of its own (lps fft) says false: each family
+      /// then lists its owner only, without members, so that the set-up
+      /// neither searches for neighbours nor stores bonds, and the memory
+      /// does not grow with the horizon. Such a model gathers the
+      /// displacements it needs itself (prepare_forces(),
+      /// prepare_results()) and cannot break single bonds.
+      bool bonds = true;
     };
 
     /**
@@ -181,8 +190,8 @@ namespace pdfem
      *
      * Threads: forces(), tangent_row() and displacement_gradient() are
      * called concurrently for disjoint owners (they must be const and
-     * write only their arguments); prepare_forces() runs before them,
-     * alone.
+     * write only their arguments); prepare_forces() and prepare_results()
+     * run before them, alone.
      */
     template <int dim>
     class Interface
@@ -254,6 +263,19 @@ namespace pdfem
        */
       virtual void
       prepare_forces(const NodalField<dim> &u)
+      {
+        (void)u;
+      }
+
+      /**
+       * Called once, serially and on every rank (collective over
+       * region.comm), before displacement_gradient() is asked for the
+       * owners at the same @p u (the nodal results): a model
+       * without bonds (Layout::bonds false) gathers there the neighbours'
+       * displacements its gradient needs. By default nothing.
+       */
+      virtual void
+      prepare_results(const NodalField<dim> &u)
       {
         (void)u;
       }

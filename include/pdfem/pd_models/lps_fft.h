@@ -2,6 +2,7 @@
 #ifndef PDFEM_PD_MODELS_LPS_FFT_H
 #define PDFEM_PD_MODELS_LPS_FFT_H
 
+#include <pdfem/fft/grid.h>
 #include <pdfem/fft/operator.h>
 #include <pdfem/pd_models/interface.h>
 
@@ -85,6 +86,13 @@ namespace pdfem
      * displacements are summed into the grid on every rank (one allreduce)
      * and every rank evaluates the whole grid.
      *
+     * No bonds (Layout::bonds false): the FFT sums over the grid's discrete
+     * horizon (FFT::horizon_offsets()), so the coupled system builds no
+     * families' members and stores no bonds. The memory is that of the
+     * grid's fields and the mesh, O(N) and independent of the horizon
+     * (doc/benchmarks/fft.md); the output's displacement gradient loops
+     * over the grid's offsets.
+     *
      * Damage (`LPS fft/Damage = energy`, doc/theory.md §14.5): the
      * paper's pointwise energy criterion (specs/002 §1.6, eqs. 42-44,
      * 50-51, 63). After every accepted step (commit_state()) the strain
@@ -97,9 +105,9 @@ namespace pdfem
      * good (FFT::update_integrity()); the operator's masks become beta =
      * chi_B lambda (FFT::Operator::set_masks()), so that the forces of the
      * next step see the dead nodes (the paper's one-step lag, eq. 63): a
-     * dead node carries no force and loses all its bonds to the FFT, while
-     * the families keep every bond intact (no bond breaks in the coupled
-     * system; the damage shows in damage() and max_damage). damage() is the
+     * dead node carries no force and loses all its bonds to the FFT (no
+     * bond breaks in the coupled system, which has none; the damage shows
+     * in damage() and max_damage). damage() is the
      * FFT damage index (specs/002 eq. 65) with the normalisation of
      * `LPS fft/Damage index` (body by default: 0 in an intact body).
      *
@@ -125,8 +133,7 @@ namespace pdfem
       Layout
       layout() const override;
 
-      /// Detects the grid, checks that every family has the bonds of the
-      /// grid's discrete horizon, makes the FFT operator and its masks.
+      /// Detects the grid, makes the FFT operator and its masks.
       void
       initialize(const Region<dim> &region) override;
 
@@ -187,7 +194,13 @@ namespace pdfem
                   const NodalField<dim>               &u,
                   std::vector<dealii::Tensor<2, dim>> &blocks) const override;
 
-      /// As "lps": the fit of the bonds with the weights omega V_j.
+      /// The owners' displacements into the box, for the gradients.
+      void
+      prepare_results(const NodalField<dim> &u) override;
+
+      /// As "lps" with uniform volumes: the fit of the grid's bonds within
+      /// the body (the discrete horizon) with the weights omega Delta V, at
+      /// the displacements of the last prepare_results().
       dealii::Tensor<2, dim>
       displacement_gradient(std::size_t            o,
                             const NodalField<dim> &u) const override;
@@ -308,6 +321,8 @@ namespace pdfem
       /// precondition()'s residual and correction on the box.
       std::vector<double>                    r_box, z_box;
       std::unique_ptr<FFT::FftOperator<dim>> op;
+      /// The grid offsets of the discrete horizon (the gradient's bonds).
+      std::vector<FFT::Offset<dim>> stencil;
     };
   } // namespace PDModels
 } // namespace pdfem
