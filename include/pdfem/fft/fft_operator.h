@@ -34,9 +34,10 @@ namespace pdfem
        * of one rank): every field is the whole grid, serial FFTW plans.
        * Several ranks: the box is split into slabs of whole planes along
        * the slowest index (local_slab(), FFTW's MPI layout, fftw3-mpi
-       * plans); each rank holds and takes its slab only, and every member
-       * function but slab(), weighted_volume() and the byte counts is
-       * collective (all ranks call it, in the same order).
+       * plans); each rank holds and takes its slab only. The constructor,
+       * set_masks(), apply(), dilatation(), energy_density(), damage() and
+       * apply_periodic_inverse() are then collective (all ranks call them,
+       * in the same order); the accessors are not.
        */
       MPI_Comm communicator = MPI_COMM_SELF;
     };
