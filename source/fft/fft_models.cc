@@ -26,7 +26,7 @@ namespace pdfem
       for (unsigned int j = 0; j < dim; ++j)
         {
           h[j]             = spectrum(j);
-          const double *uj = &u[j * N];
+          const double *uj = u.data() + j * N;
           fill([&](std::size_t k) { return beta[k] * uj[k]; });
           forward(h[j]);
         }
@@ -34,7 +34,7 @@ namespace pdfem
       for (unsigned int i = 0; i < dim; ++i)
         {
           inverse(spectrum(i));
-          double *Li = &L[i * N];
+          double *Li = L.data() + i * N;
           use([&](std::size_t k, double r) {
             double s = r;
             for (unsigned int j = 0; j < dim; ++j)
@@ -61,7 +61,7 @@ namespace pdfem
       zero(q);
       for (unsigned int i = 0; i < dim; ++i)
         {
-          const double *ui = &u[i * N];
+          const double *ui = u.data() + i * N;
           fill([&](std::size_t k) { return beta[k] * ui[k]; });
           forward(h);
           for (unsigned int j = 0; j < dim; ++j)
@@ -71,7 +71,7 @@ namespace pdfem
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = i; j < dim; ++j)
           {
-            const double *ui = &u[i * N], *uj = &u[j * N];
+            const double *ui = u.data() + i * N, *uj = u.data() + j * N;
             fill([&](std::size_t k) { return beta[k] * ui[k] * uj[k]; });
             forward(h);
             multiply(q,
@@ -222,7 +222,7 @@ namespace pdfem
       for (unsigned int j = 0; j < dim; ++j)
         {
           h[j]             = spectrum(j);
-          const double *uj = &u[j * N];
+          const double *uj = u.data() + j * N;
           fill([&](std::size_t k) { return beta[k] * uj[k]; });
           forward(h[j]);
         }
@@ -250,14 +250,14 @@ namespace pdfem
       for (unsigned int i = 0; i < dim; ++i)
         {
           inverse(spectrum(i));
-          double *Li = &L[i * N];
+          double *Li = L.data() + i * N;
           use([&](std::size_t k, double r) { Li[k] = B * minv[k] * r; });
         }
       fftw_complex *h[dim], *ht = spectrum(dim);
       for (unsigned int j = 0; j < dim; ++j)
         {
           h[j]             = spectrum(j);
-          const double *uj = &u[j * N];
+          const double *uj = u.data() + j * N;
           fill([&](std::size_t k) { return beta[k] * minv[k] * uj[k]; });
           forward(h[j]);
         }
@@ -267,7 +267,7 @@ namespace pdfem
       for (unsigned int i = 0; i < dim; ++i)
         {
           inverse(spectrum(i));
-          double *Li = &L[i * N];
+          double *Li = L.data() + i * N;
           use([&](std::size_t k, double r) {
             double s = Li[k] + r + A * theta[k] * minv[k] * gb[i][k];
             for (unsigned int j = 0; j < dim; ++j)

@@ -2,7 +2,8 @@
 // The PD operators by FFT (FCBM, specs/002): the transform engine (FFTW
 // plans, kernel spectra, Fourier-space products), the masks, and what the
 // models share (energy density, damage). The models' forms are in
-// fft_models.cc.
+// fft_models.cc. One rank: serial r2c/c2r plans on the whole box; several:
+// fftw3-mpi plans on slabs of whole planes, the spectra left transposed.
 #include <pdfem/base/exceptions.h>
 #include <pdfem/fft/fft_operator.h>
 
@@ -21,8 +22,82 @@ namespace pdfem
       // FFTW's planner is not thread-safe: plans are made and destroyed
       // under this lock (executing them is thread-safe).
       std::mutex     planner_mutex;
-      std::once_flag threads_initialised;
+      std::once_flag threads_initialised, mpi_initialised;
+
+      /// fftw_init_threads() once, then (@p mpi) fftw_mpi_init() once.
+      void
+      initialise_fftw(const bool mpi)
+      {
+        std::call_once(threads_initialised, []() { fftw_init_threads(); });
+        if (mpi)
+          std::call_once(mpi_initialised, []() { fftw_mpi_init(); });
+      }
+
+      /// Whether @p comm has several ranks (MPI_COMM_SELF: no MPI call).
+      bool
+      several_ranks(MPI_Comm comm)
+      {
+        if (comm == MPI_COMM_SELF)
+          return false;
+        if (comm == MPI_COMM_NULL)
+          throw std::invalid_argument("FFT::FftOptions: the communicator is "
+                                      "MPI_COMM_NULL");
+        int initialised = 0;
+        MPI_Initialized(&initialised);
+        if (!initialised)
+          throw std::logic_error("FFT::FftOptions: a communicator other than "
+                                 "MPI_COMM_SELF needs MPI initialised");
+        int size = 1;
+        MPI_Comm_size(comm, &size);
+        return size > 1;
+      }
+
+      /// FFTW's transposed r2c layout of the complex box on this rank.
+      struct MpiLayout
+      {
+        std::ptrdiff_t alloc = 0, n0 = 0, first0 = 0, n1 = 0, first1 = 0;
+      };
+
+      template <int dim>
+      MpiLayout
+      mpi_layout(const Grid<dim> &grid, MPI_Comm comm)
+      {
+        std::ptrdiff_t cn[dim];
+        for (unsigned int d = 0; d < dim; ++d)
+          cn[d] = grid.n[d];
+        cn[dim - 1] = grid.n[dim - 1] / 2 + 1;
+        MpiLayout l;
+        l.alloc = fftw_mpi_local_size_transposed(
+          dim, cn, comm, &l.n0, &l.first0, &l.n1, &l.first1);
+        return l;
+      }
+
+      template <int dim>
+      Slab
+      make_slab(const Grid<dim>  &grid,
+                const std::size_t first_plane,
+                const std::size_t n_planes)
+      {
+        const std::size_t plane = grid.n_nodes() / grid.n[0];
+        Slab              s;
+        s.first_plane = static_cast<unsigned int>(first_plane);
+        s.n_planes    = static_cast<unsigned int>(n_planes);
+        s.begin       = first_plane * plane;
+        s.end         = s.begin + n_planes * plane;
+        return s;
+      }
     } // namespace
+
+    template <int dim>
+    Slab
+    local_slab(const Grid<dim> &grid, MPI_Comm communicator)
+    {
+      if (!several_ranks(communicator))
+        return make_slab(grid, 0, grid.n[0]);
+      initialise_fftw(true);
+      const MpiLayout l = mpi_layout(grid, communicator);
+      return make_slab(grid, l.first0, l.n0);
+    }
 
     template <int dim>
     FftOperator<dim>::Impl::Impl(const Grid<dim>  &grid_,
@@ -31,26 +106,69 @@ namespace pdfem
       : grid(grid_)
       , material(material_)
       , threads(std::max(1u, options.threads))
+      , distributed(several_ranks(options.communicator))
+      , comm(options.communicator)
       , offsets(horizon_offsets(grid_, material_.horizon))
     {
-      N  = grid.n_nodes();
-      Nc = N / grid.n[dim - 1] * (grid.n[dim - 1] / 2 + 1);
-      dV = grid.node_volume();
-      internal::lps_constants<dim>(material, A, B);
-
-      real = fftw_alloc_real(N);
-      spectrum(0);
-      int n[dim];
+      N_global = grid.n_nodes();
+      row      = grid.n[dim - 1];
       for (unsigned int d = 0; d < dim; ++d)
-        n[d] = static_cast<int>(grid.n[d]);
+        cn[d] = grid.n[d];
+      cn[dim - 1] = row / 2 + 1;
+      dV          = grid.node_volume();
+      internal::lps_constants<dim>(material, A, B);
+      initialise_fftw(distributed);
+      if (!distributed)
+        {
+          slab      = make_slab(grid, 0, grid.n[0]);
+          N         = N_global;
+          Nc        = N / row * cn[dim - 1];
+          stride    = row;
+          real_size = N;
+          alloc     = Nc;
+        }
+      else
+        {
+          // FFTW's slabs: whole planes of i_0 in real space (rows padded to
+          // 2 (n/2 + 1) doubles), whole planes of k_1 in Fourier space
+          const MpiLayout l = mpi_layout(grid, comm);
+          slab              = make_slab(grid, l.first0, l.n0);
+          N                 = slab.n_nodes();
+          stride            = 2 * cn[dim - 1];
+          k1_first          = l.first1;
+          k1_count          = l.n1;
+          Nc                = k1_count * cn[0];
+          for (unsigned int d = 2; d < dim; ++d)
+            Nc *= cn[d];
+          alloc     = std::max<std::size_t>(l.alloc, 1);
+          real_size = 2 * alloc;
+        }
+
+      real = fftw_alloc_real(real_size);
+      spectrum(0);
       {
-        std::call_once(threads_initialised, []() { fftw_init_threads(); });
         std::lock_guard<std::mutex> lock(planner_mutex);
         fftw_plan_with_nthreads(static_cast<int>(threads));
         const unsigned int flags =
           options.planning == Planning::measure ? FFTW_MEASURE : FFTW_ESTIMATE;
-        forward_plan = fftw_plan_dft_r2c(dim, n, real, spectra[0], flags);
-        inverse_plan = fftw_plan_dft_c2r(dim, n, spectra[0], real, flags);
+        if (!distributed)
+          {
+            int n[dim];
+            for (unsigned int d = 0; d < dim; ++d)
+              n[d] = static_cast<int>(grid.n[d]);
+            forward_plan = fftw_plan_dft_r2c(dim, n, real, spectra[0], flags);
+            inverse_plan = fftw_plan_dft_c2r(dim, n, spectra[0], real, flags);
+          }
+        else
+          {
+            std::ptrdiff_t n[dim];
+            for (unsigned int d = 0; d < dim; ++d)
+              n[d] = grid.n[d];
+            forward_plan = fftw_mpi_plan_dft_r2c(
+              dim, n, real, spectra[0], comm, flags | FFTW_MPI_TRANSPOSED_OUT);
+            inverse_plan = fftw_mpi_plan_dft_c2r(
+              dim, n, spectra[0], real, comm, flags | FFTW_MPI_TRANSPOSED_IN);
+          }
       }
       if (forward_plan == nullptr || inverse_plan == nullptr)
         throw std::runtime_error("FFTW could not make a plan");
@@ -77,7 +195,7 @@ namespace pdfem
     FftOperator<dim>::Impl::spectrum(const unsigned int i)
     {
       while (spectra.size() <= i)
-        spectra.push_back(fftw_alloc_complex(Nc));
+        spectra.push_back(fftw_alloc_complex(alloc));
       return spectra[i];
     }
 
@@ -88,14 +206,20 @@ namespace pdfem
                                         const bool   odd,
                                         const double scale)
     {
-      std::memset(real, 0, N * sizeof(double));
+      // sampled on this rank's slab (a kernel is a function of the
+      // periodic offset: each rank samples its own planes)
+      std::memset(real, 0, real_size * sizeof(double));
       for (const auto &o : offsets)
         {
           std::array<unsigned int, dim> i;
           for (unsigned int d = 0; d < dim; ++d)
             i[d] = static_cast<unsigned int>((o.p[d] + int(grid.n[d])) %
                                              int(grid.n[d]));
-          real[grid.node(i)] = value(o);
+          const std::size_t node = grid.node(i);
+          if (!slab.contains(node))
+            continue;
+          const std::size_t k              = node - slab.begin;
+          real[k / row * stride + k % row] = value(o);
         }
       fftw_complex *s = spectrum(0);
       forward(s);
@@ -112,7 +236,7 @@ namespace pdfem
     void
     FftOperator<dim>::Impl::make_kernels()
     {
-      const double scale = dV / N;
+      const double scale = dV / N_global;
       const double alpha = material.micromodulus;
       const auto   omega = [this](const Offset<dim> &o) {
         return material.omega(o.length);
@@ -177,7 +301,7 @@ namespace pdfem
         {
           multiply(t, kernels[s], b, 1., false);
           inverse(t);
-          out[s].assign(real, real + N);
+          take(out[s]);
         }
     }
 
@@ -224,11 +348,11 @@ namespace pdfem
                 {
                   o.multiply(t, o.a[i], b, 1., false);
                   o.inverse(t);
-                  o.q[i].assign(o.real, o.real + N);
+                  o.take(o.q[i]);
                 }
               o.multiply(t, o.c, b, 1., false);
               o.inverse(t);
-              o.p.assign(o.real, o.real + N);
+              o.take(o.p);
             }
           return;
         }
@@ -241,7 +365,7 @@ namespace pdfem
             return this->material_.omega(b_.length) * b_.length * b_.length;
           },
           false,
-          o.dV / N);
+          o.dV / o.N_global);
         o.multiply(t, w, b, 1., false);
       }
       o.inverse(t);
@@ -256,7 +380,7 @@ namespace pdfem
         {
           o.multiply(t, o.g[i], b, 1., false);
           o.inverse(t);
-          o.gb[i].assign(o.real, o.real + N);
+          o.take(o.gb[i]);
         }
       o.correlate_symmetric(o.K, b, o.P);
       o.fill([&](std::size_t k) { return o.beta[k] * o.minv[k]; });
@@ -353,24 +477,27 @@ namespace pdfem
                              const DamageNormalisation normalisation)
     {
       Impl &o = *impl;
-      if (o.omega0.s.empty())
-        o.omega0 = o.make_kernel([](const Offset<dim> &) { return 1.; },
-                                 false,
-                                 1. / o.N);
+      if (!o.have_omega0)
+        {
+          o.omega0      = o.make_kernel([](const Offset<dim> &) { return 1.; },
+                                   false,
+                                   1. / o.N_global);
+          o.have_omega0 = true;
+        }
       fftw_complex       *b = o.spectrum(1), *t = o.spectrum(2);
       std::vector<double> count(o.N), D(o.N, double(o.offsets.size()));
       o.fill([&](std::size_t k) { return o.beta[k]; });
       o.forward(b);
       o.multiply(t, o.omega0, b, 1., false);
       o.inverse(t);
-      count.assign(o.real, o.real + o.N);
+      o.take(count);
       if (normalisation == DamageNormalisation::body)
         {
           o.fill([&](std::size_t k) { return o.body[k]; });
           o.forward(b);
           o.multiply(t, o.omega0, b, 1., false);
           o.inverse(t);
-          D.assign(o.real, o.real + o.N);
+          o.take(D);
         }
       d.resize(o.N);
       const double none = 1e-9 * o.offsets.size();
@@ -392,30 +519,45 @@ namespace pdfem
 
     template <int dim>
     double
-    FftOperator<dim>::bytes_per_node() const
+    FftOperator<dim>::bytes() const
     {
       const Impl &o       = *impl;
-      double      reals   = 0.; // doubles held, in units of N
+      double      reals   = 0.; // doubles held
       const auto  kernels = [&](const std::vector<typename Impl::Kernel> &ks) {
         for (const auto &k : ks)
-          reals += double(k.s.size()) / o.N;
+          reals += double(k.s.size());
       };
       kernels(o.C);
       kernels(o.a);
       kernels(o.K);
       kernels(o.g);
-      reals += double(o.c.s.size() + o.omega0.s.size()) / o.N;
+      reals += double(o.c.s.size() + o.omega0.s.size());
       const auto fields = [&](const std::vector<std::vector<double>> &fs) {
         for (const auto &f : fs)
-          reals += double(f.size()) / o.N;
+          reals += double(f.size());
       };
       fields(o.P);
       fields(o.q);
       fields(o.gb);
       fields({o.beta, o.body, o.p, o.m, o.minv, o.theta});
-      reals += 1.;                                         // real buffer
-      reals += 2. * double(o.spectra.size()) * o.Nc / o.N; // spectra
+      reals += double(o.real_size);                     // real buffer
+      reals += 2. * double(o.spectra.size()) * o.alloc; // spectra
+      reals += 2. * double(o.periodic_inverse.size());  // G^-1
       return 8. * reals;
+    }
+
+    template <int dim>
+    double
+    FftOperator<dim>::bytes_per_node() const
+    {
+      return bytes() / double(std::max<std::size_t>(impl->N, 1));
+    }
+
+    template <int dim>
+    const Slab &
+    FftOperator<dim>::slab() const
+    {
+      return impl->slab;
     }
 
     template <int dim>
@@ -427,5 +569,9 @@ namespace pdfem
 
     template class FftOperator<2>;
     template class FftOperator<3>;
+    template Slab
+    local_slab(const Grid<2> &, MPI_Comm);
+    template Slab
+    local_slab(const Grid<3> &, MPI_Comm);
   } // namespace FFT
 } // namespace pdfem

@@ -1,18 +1,21 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The state of FftOperator (not installed): the FFTW plans, the kernel
 // spectra, the mask fields and the work spectra, with the Fourier-space
-// helpers the models' forms are written with.
+// helpers the models' forms are written with. With several MPI ranks every
+// array is the rank's part: the nodes of its slab (the real buffer padded
+// to FFTW's 2 (n/2 + 1) per row) and its modes in FFTW's transposed layout.
 #ifndef PDFEM_SOURCE_FFT_FFT_OPERATOR_IMPL_H
 #define PDFEM_SOURCE_FFT_FFT_OPERATOR_IMPL_H
 
 #include <pdfem/fft/fft_operator.h>
 
+#include <array>
 #include <complex>
 #include <cstring>
 #include <vector>
 
 #include "fft_tools.h"
-#include <fftw3.h>
+#include <fftw3-mpi.h>
 
 namespace pdfem
 {
@@ -42,16 +45,41 @@ namespace pdfem
       fftw_complex *
       spectrum(unsigned int i);
 
+      /// f(k, i) for every local node k, i its place in the real buffer
+      /// (k on one rank; rows padded to @p stride with several).
+      template <typename F>
+      void
+      for_nodes(const F &f)
+      {
+        const std::size_t nl = row, st = stride;
+        internal::parallel_for(threads, N, [&](std::size_t b, std::size_t e) {
+          if (st == nl)
+            {
+              for (std::size_t k = b; k < e; ++k)
+                f(k, k);
+              return;
+            }
+          std::size_t col = b % nl, i = b / nl * st + col;
+          for (std::size_t k = b; k < e; ++k)
+            {
+              f(k, i);
+              ++i;
+              if (++col == nl)
+                {
+                  col = 0;
+                  i += st - nl;
+                }
+            }
+        });
+      }
+
       /// real = f(k) for every node.
       template <typename F>
       void
       fill(const F &f)
       {
         double *r = real;
-        internal::parallel_for(threads, N, [&](std::size_t b, std::size_t e) {
-          for (std::size_t k = b; k < e; ++k)
-            r[k] = f(k);
-        });
+        for_nodes([&](std::size_t k, std::size_t i) { r[i] = f(k); });
       }
 
       /// g(k, real[k]) for every node, after an inverse transform.
@@ -60,16 +88,25 @@ namespace pdfem
       use(const G &g)
       {
         const double *r = real;
-        internal::parallel_for(threads, N, [&](std::size_t b, std::size_t e) {
-          for (std::size_t k = b; k < e; ++k)
-            g(k, r[k]);
-        });
+        for_nodes([&](std::size_t k, std::size_t i) { g(k, r[i]); });
+      }
+
+      /// out = real (N values), after an inverse transform.
+      void
+      take(std::vector<double> &out)
+      {
+        out.resize(N);
+        double *o = out.data();
+        use([o](std::size_t k, double r) { o[k] = r; });
       }
 
       void
       forward(fftw_complex *out)
       {
-        fftw_execute_dft_r2c(forward_plan, real, out);
+        if (distributed)
+          fftw_mpi_execute_dft_r2c(forward_plan, real, out);
+        else
+          fftw_execute_dft_r2c(forward_plan, real, out);
         ++transforms;
       }
 
@@ -77,15 +114,53 @@ namespace pdfem
       void
       inverse(fftw_complex *in)
       {
-        fftw_execute_dft_c2r(inverse_plan, in, real);
+        if (distributed)
+          fftw_mpi_execute_dft_c2r(inverse_plan, in, real);
+        else
+          fftw_execute_dft_c2r(inverse_plan, in, real);
         ++transforms;
+      }
+
+      /**
+       * The local index of the mode with wave numbers @p k (0 <= k[d] <
+       * n[d], the last < n/2 + 1), -1 if another rank holds it. One rank:
+       * row major over n_0 x ... x (n_{dim-1}/2 + 1); several: FFTW's
+       * transposed layout, the first two indices swapped and the new first
+       * one distributed.
+       */
+      std::ptrdiff_t
+      local_mode(const std::array<std::size_t, dim> &k) const
+      {
+        if (!distributed)
+          {
+            std::size_t m = 0;
+            for (unsigned int d = 0; d < dim; ++d)
+              m = m * cn[d] + k[d];
+            return static_cast<std::ptrdiff_t>(m);
+          }
+        if (k[1] < k1_first || k[1] >= k1_first + k1_count)
+          return -1;
+        std::size_t m = (k[1] - k1_first) * cn[0] + k[0];
+        for (unsigned int d = 2; d < dim; ++d)
+          m = m * cn[d] + k[d];
+        return static_cast<std::ptrdiff_t>(m);
+      }
+
+      /// The sum of @p x over the ranks (x on one rank).
+      double
+      sum_over_ranks(double x) const
+      {
+        if (distributed)
+          MPI_Allreduce(MPI_IN_PLACE, &x, 1, MPI_DOUBLE, MPI_SUM, comm);
+        return x;
       }
 
       void
       zero(fftw_complex *out)
       {
         internal::parallel_for(threads, Nc, [&](std::size_t b, std::size_t e) {
-          std::memset(out + b, 0, (e - b) * sizeof(fftw_complex));
+          if (e > b)
+            std::memset(out + b, 0, (e - b) * sizeof(fftw_complex));
         });
       }
 
@@ -226,10 +301,24 @@ namespace pdfem
       void
       lps_dilatation(const std::vector<double> &u, bool keep_sums);
 
-      Grid<dim> const                grid;
-      Material const                 material;
-      unsigned int const             threads;
-      std::size_t                    N = 0, Nc = 0;
+      Grid<dim> const    grid;
+      Material const     material;
+      unsigned int const threads;
+      // several ranks (fftw3-mpi plans) or one (serial plans), and the
+      // ranks' communicator
+      bool     distributed = false;
+      MPI_Comm comm        = MPI_COMM_SELF;
+      // local nodes N (the slab's), local modes Nc, box nodes N_global;
+      // a row (the last, fastest index) has row nodes and takes stride
+      // doubles in the real buffer (real_size doubles), a spectrum alloc
+      // complex numbers
+      std::size_t N = 0, Nc = 0, N_global = 0, row = 0, stride = 0;
+      std::size_t real_size = 0, alloc = 0;
+      Slab        slab;
+      // the complex box n_0 x ... x (n_{dim-1}/2 + 1); several ranks: the
+      // rank's modes are k_1 = k1_first, ..., k1_first + k1_count - 1
+      std::array<std::size_t, dim>   cn{};
+      std::size_t                    k1_first = 0, k1_count = 0;
       double                         dV = 0.;
       std::vector<Offset<dim>> const offsets;
       fftw_plan                      forward_plan = nullptr;
@@ -242,6 +331,7 @@ namespace pdfem
       // (LPS), the influence indicator omega_0 (damage, made when asked)
       std::vector<Kernel> C, a, K, g;
       Kernel              c, omega0;
+      bool                have_omega0 = false;
 
       // mask fields: beta = chi_B lambda, chi_B; P_s = [C_s beta] (bond
       // based) or (1/m) [K_s beta] + [K_s (beta/m)] (LPS); q_i = [a_i beta],
@@ -252,8 +342,10 @@ namespace pdfem
       double                           A = 0., B = 0.;
 
       // apply_periodic_inverse(): G^(kappa)^-1, dim x dim per mode (row
-      // major), empty until the first use.
+      // major), made at the first use (a rank may hold no mode: the flag,
+      // not the size, says whether it is made, so that all ranks agree).
       std::vector<std::complex<double>> periodic_inverse;
+      bool                              have_periodic_inverse = false;
     };
   } // namespace FFT
 } // namespace pdfem

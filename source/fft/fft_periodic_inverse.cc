@@ -4,6 +4,7 @@
 // preconditioner for the statics of bounded ones.
 #include <pdfem/fft/fft_operator.h>
 
+#include <array>
 #include <complex>
 #include <stdexcept>
 #include <vector>
@@ -69,20 +70,24 @@ namespace pdfem
         throw std::logic_error("FFT: the periodic inverse is defined for the "
                                "linear models only");
       constexpr unsigned int nn = dim * dim;
-      if (o.periodic_inverse.empty())
+      if (!o.have_periodic_inverse)
         {
           // G^ column by column: -L of a unit impulse at node 0 in
           // direction j, transformed, is column j of the symbol (the
-          // operator is translation invariant once every mask is 1).
+          // operator is translation invariant once every mask is 1). Node
+          // 0 is on the first rank's slab; each rank keeps its modes.
           const std::vector<double> beta = o.beta, body = o.body;
           set_masks(std::vector<double>(o.N, 1.), std::vector<double>(o.N, 1.));
           o.periodic_inverse.assign(nn * o.Nc, 0.);
           std::vector<double> impulse(dim * o.N, 0.), L;
+          const bool          origin = o.slab.contains(0);
           for (unsigned int j = 0; j < dim; ++j)
             {
-              impulse[j * o.N] = 1.;
+              if (origin)
+                impulse[j * o.N] = 1.;
               apply(impulse, L);
-              impulse[j * o.N] = 0.;
+              if (origin)
+                impulse[j * o.N] = 0.;
               for (unsigned int i = 0; i < dim; ++i)
                 {
                   o.fill([&](std::size_t k) { return -L[i * o.N + k]; });
@@ -95,14 +100,23 @@ namespace pdfem
             }
           set_masks(body, beta); // beta = chi_B lambda: the same masks
           // kappa = 0 holds the rigid translations (G^ = 0): s I there, s
-          // the mean eigenvalue of the next mode (index 1 of the last,
-          // contiguous direction), the softest the box can resolve.
-          double s = 0.;
-          for (unsigned int i = 0; i < dim; ++i)
-            s += o.periodic_inverse[nn + i * dim + i].real() / dim;
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = 0; j < dim; ++j)
-              o.periodic_inverse[i * dim + j] = i == j ? s : 0.;
+          // the mean eigenvalue of the mode (0, ..., 0, 1) (index 1 of the
+          // last direction), the softest the box can resolve; its rank
+          // sends s to all (the others add 0).
+          std::array<std::size_t, dim> k{};
+          k[dim - 1]              = 1;
+          const std::ptrdiff_t m1 = o.local_mode(k);
+          double               s  = 0.;
+          if (m1 >= 0)
+            for (unsigned int i = 0; i < dim; ++i)
+              s += o.periodic_inverse[m1 * nn + i * dim + i].real() / dim;
+          s                       = o.sum_over_ranks(s);
+          k[dim - 1]              = 0;
+          const std::ptrdiff_t m0 = o.local_mode(k);
+          if (m0 >= 0)
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                o.periodic_inverse[m0 * nn + i * dim + j] = i == j ? s : 0.;
           internal::parallel_for(
             o.threads, o.Nc, [&](std::size_t b, std::size_t e) {
               for (std::size_t m = b; m < e; ++m)
@@ -113,6 +127,7 @@ namespace pdfem
                       a[k] = k % (dim + 1) == 0 ? 1. / s : 0.;
                 }
             });
+          o.have_periodic_inverse = true;
         }
 
       std::vector<fftw_complex *> h(dim);
@@ -122,7 +137,7 @@ namespace pdfem
           h[j] = o.spectrum(j);
           o.forward(h[j]);
         }
-      const double scale = 1. / o.N; // FFTW's transforms are unnormalised
+      const double scale = 1. / o.N_global; // FFTW's transforms: unnormalised
       internal::parallel_for(o.threads,
                              o.Nc,
                              [&](std::size_t b, std::size_t e) {

@@ -10,6 +10,12 @@
 // on min(N, 2^direct_log2) nodes and scaled to N; the columns say on how
 // many nodes it ran. Times are the best of the repetitions made within
 // --seconds (at least one), after one untimed evaluation for the FFT.
+//
+// Under mpirun the FFT operator is distributed over the ranks (slabs of
+// whole planes, FftOptions::communicator = MPI_COMM_WORLD): each rank holds
+// its slab of u and L, the time is rank 0's for an evaluation followed by a
+// barrier, fft_bytes_per_rank is the largest rank's bytes(), and the direct
+// sum is left out (--no-direct implied). Rank 0 writes the rows.
 #include <pdfem/fft/direct_operator.h>
 #include <pdfem/fft/fft_operator.h>
 
@@ -24,6 +30,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <mpi.h>
 
 namespace
 {
@@ -41,6 +49,8 @@ namespace
     Planning                  planning    = Planning::measure;
     bool                      header      = false;
     bool                      skip_direct = false;
+    int                       ranks       = 1;
+    int                       rank        = 0;
   };
 
   template <typename T>
@@ -63,7 +73,8 @@ namespace
       << "usage: pdfem_fft_benchmark --dim 2|3 --model linear|nonlinear|lps\n"
       << "         --log2n K1,K2,... --m M1,M2,... [--threads T]\n"
       << "         [--direct-log2 K] [--no-direct] [--seconds S]\n"
-      << "         [--planning measure|estimate] [--header]\n";
+      << "         [--planning measure|estimate] [--header]\n"
+      << "       (under mpirun -np P: the FFT operator on P ranks)\n";
     std::exit(2);
   }
 
@@ -115,6 +126,10 @@ namespace
       }
     if (o.dim != 2 && o.dim != 3)
       usage("--dim must be 2 or 3");
+    MPI_Comm_size(MPI_COMM_WORLD, &o.ranks);
+    MPI_Comm_rank(MPI_COMM_WORLD, &o.rank);
+    if (o.ranks > 1)
+      o.skip_direct = true;
     return o;
   }
 
@@ -164,15 +179,20 @@ namespace
       .count();
   }
 
-  /// The best time of f() within @p seconds (at least @p at_least runs).
+  /// The best time of f() within @p seconds (at least @p at_least runs);
+  /// rank 0 decides when to stop (all ranks run f() as often).
   template <typename F>
   double
   best_time(const F &f, const double seconds, const unsigned int at_least)
   {
     double       best  = 1e300;
     const double start = now();
-    for (unsigned int r = 0; r < at_least || now() - start < seconds; ++r)
+    for (unsigned int r = 0;; ++r)
       {
+        int more = r < at_least || now() - start < seconds;
+        MPI_Bcast(&more, 1, MPI_INT, 0, MPI_COMM_WORLD);
+        if (!more)
+          break;
         const double t = now();
         f();
         best = std::min(best, now() - t);
@@ -189,12 +209,13 @@ namespace
     for (const unsigned int k : o.log2n)
       for (const double m : o.m)
         {
-          const Grid<dim>   g   = grid<dim>(k);
-          const Material    mat = material(o.model, m, dim);
-          const std::size_t N   = g.n_nodes();
-          std::mt19937      generator(1);
+          const Grid<dim>   g    = grid<dim>(k);
+          const Material    mat  = material(o.model, m, dim);
+          const std::size_t N    = g.n_nodes();
+          const Slab        slab = local_slab(g, MPI_COMM_WORLD);
+          std::mt19937      generator(1 + o.rank);
           std::uniform_real_distribution<double> value(-1e-3, 1e-3);
-          std::vector<double>                    u(dim * N), L, body, integrity;
+          std::vector<double> u(dim * slab.n_nodes()), L, body, integrity;
           for (auto &v : u)
             v = value(generator);
           // The body fills the periodic box (no gap): the direct sum then
@@ -205,19 +226,34 @@ namespace
           integrity.clear();
 
           FftOptions options;
-          options.threads     = o.threads;
-          options.planning    = o.planning;
+          options.threads      = o.threads;
+          options.planning     = o.planning;
+          options.communicator = MPI_COMM_WORLD;
+          MPI_Barrier(MPI_COMM_WORLD);
           double           t0 = now();
           FftOperator<dim> fft(g, mat, options);
           fft.set_masks(body, integrity);
+          MPI_Barrier(MPI_COMM_WORLD);
           const double setup = now() - t0;
           fft.apply(u, L); // untimed: first touch of the work space
           const std::size_t before = fft.n_transforms();
           fft.apply(u, L);
           const std::size_t transforms = fft.n_transforms() - before;
-          const double      t_fft =
-            best_time([&]() { fft.apply(u, L); }, o.seconds, 2);
-          const double bytes = fft.bytes_per_node();
+          const double      t_fft      = best_time(
+            [&]() {
+              fft.apply(u, L);
+              MPI_Barrier(MPI_COMM_WORLD);
+            },
+            o.seconds,
+            2);
+          const double bytes          = fft.bytes_per_node();
+          double       bytes_per_rank = fft.bytes();
+          MPI_Allreduce(MPI_IN_PLACE,
+                        &bytes_per_rank,
+                        1,
+                        MPI_DOUBLE,
+                        MPI_MAX,
+                        MPI_COMM_WORLD);
           // the fields a run needs at least: u and L (dim each), beta, and
           // for LPS m and theta
           const double minimum =
@@ -257,8 +293,10 @@ namespace
                   t_direct = per_node * double(N);
                 }
             }
+          if (o.rank != 0)
+            continue;
           std::printf("%d,%s,%g,%u,%zu,%s,%zu,%.6e,%.3f,%zu,%.6e,%zu,%.3f,%.1f,"
-                      "%.0f,%u\n",
+                      "%.0f,%u,%d,%.0f\n",
                       dim,
                       model_name(o.model).c_str(),
                       m,
@@ -274,7 +312,9 @@ namespace
                       t_direct > 0. ? t_direct / t_fft : 0.,
                       bytes,
                       minimum,
-                      o.threads);
+                      o.threads,
+                      o.ranks,
+                      bytes_per_rank);
           std::fflush(stdout);
         }
   }
@@ -283,14 +323,17 @@ namespace
 int
 main(int argc, char **argv)
 {
+  MPI_Init(&argc, &argv);
   const Options o = parse(argc, argv);
-  if (o.header)
+  if (o.header && o.rank == 0)
     std::printf("dim,model,m,log2n,nodes,grid,bonds,fft_seconds,fft_setup_"
                 "seconds,transforms,direct_seconds,direct_nodes,speedup,fft_"
-                "bytes_per_node,min_bytes_per_node,threads\n");
+                "bytes_per_node,min_bytes_per_node,threads,ranks,fft_bytes_"
+                "per_rank\n");
   if (o.dim == 2)
     run<2>(o);
   else
     run<3>(o);
+  MPI_Finalize();
   return 0;
 }

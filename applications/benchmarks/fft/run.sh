@@ -6,7 +6,8 @@
 #   the nonlinear bond-based model at m = 5 on three sizes.
 # The direct sum is timed on min(N, 2^15) nodes (3D) or min(N, 2^16) (2D) and scaled to N (its cost
 # per node does not depend on N: the bonds are grid offsets); one full-size direct run per dimension
-# checks that scaling. Extra rows: the crossover (m = 1, 1.5, 2) and two threads at 3D, N = 2^21.
+# checks that scaling. Extra rows: the crossover (m = 1, 1.5, 2), two threads and two MPI ranks at 3D,
+# N = 2^21.
 # Writes doc/benchmarks/fft.csv (the sweep), fft_extra.csv (check, crossover, threads) and, when
 # pdfem-plot is built, the charts fft_time_3d.png, fft_time_2d.png, fft_speedup.png and
 # fft_crossover.png.
@@ -40,6 +41,10 @@ ms=3,4,5,6,8,10
   # two threads (FFTW's threaded plans; the direct sum's rows on two threads)
   "$bench" --dim 3 --model lps --log2n 21 --m 5 --threads 2 --seconds "$s" | sed 's/^/threads,/'
   "$bench" --dim 3 --model linear --log2n 21 --m 5 --threads 2 --seconds "$s" | sed 's/^/threads,/'
+  # two ranks of one thread (slabs of the box, FFTW's MPI plans; no direct sum)
+  if command -v mpirun > /dev/null; then
+    mpirun -np 2 "$bench" --dim 3 --model lps --log2n 21 --m 5 --seconds "$s" | sed 's/^/mpi,/'
+  fi
 } | tee "$extra"
 
 if [ -x "$plot" ] && command -v xvfb-run > /dev/null; then

@@ -6,6 +6,8 @@
 
 #include <memory>
 
+#include <mpi.h>
+
 namespace pdfem
 {
   namespace FFT
@@ -24,10 +26,32 @@ namespace pdfem
     struct FftOptions
     {
       /// Threads of FFTW's plans (fftw3_threads) and of the pointwise
-      /// loops.
+      /// loops (per rank).
       unsigned int threads  = 1;
       Planning     planning = Planning::estimate;
+      /**
+       * The ranks that share the box. MPI_COMM_SELF (or any communicator
+       * of one rank): every field is the whole grid, serial FFTW plans.
+       * Several ranks: the box is split into slabs of whole planes along
+       * the slowest index (local_slab(), FFTW's MPI layout, fftw3-mpi
+       * plans); each rank holds and takes its slab only. The constructor,
+       * set_masks(), apply(), dilatation(), energy_density(), damage() and
+       * apply_periodic_inverse() are then collective (all ranks call them,
+       * in the same order); the accessors are not.
+       */
+      MPI_Comm communicator = MPI_COMM_SELF;
     };
+
+    /**
+     * The slab of @p grid this rank holds in an FftOperator on
+     * @p communicator (the whole grid for one rank): the same as
+     * FftOperator::slab(), known before the operator is made (FFTW's
+     * blocks of ceil(n_0 / ranks) planes; no communication). Ranks after
+     * the last plane hold none.
+     */
+    template <int dim>
+    Slab
+    local_slab(const Grid<dim> &grid, MPI_Comm communicator);
 
     /**
      * The operators of Operator<dim> by the fast convolution-based method
@@ -55,6 +79,17 @@ namespace pdfem
      * Per evaluation (3D): linear bond based 3 forward + 3 inverse FFTs,
      * LPS 7 + 7, nonlinear bond based 13 + 23. FFTW headers are kept out of
      * this header (pimpl).
+     *
+     * MPI (FftOptions::communicator with several ranks): each rank holds
+     * the Slab slab() of the box, whole planes of the slowest index, and
+     * every field argument (u, force, theta, W, d, the masks, r, z) and
+     * weighted_volume() hold that slab only: N = slab().n_nodes() values
+     * per component, component c of box node slab().begin + k at c N + k.
+     * The kernels are sampled on the slab, the Fourier-space work is done
+     * on the rank's modes in FFTW's transposed layout (no transpose back),
+     * and every result equals the one-rank result to round-off. The
+     * memory per rank falls with the rank count (the masks, fields, kernel
+     * spectra and the periodic inverse's symbol are O(N / ranks)).
      */
     template <int dim>
     class FftOperator : public Operator<dim>
@@ -90,8 +125,20 @@ namespace pdfem
       const std::vector<double> &
       weighted_volume() const override;
 
+      /// bytes() / slab().n_nodes() (bytes() for a rank without nodes).
       double
       bytes_per_node() const override;
+
+      /**
+       * The bytes this rank holds: kernels, mask fields and work space at
+       * FFTW's local allocation sizes (the caller's fields not included).
+       */
+      double
+      bytes() const;
+
+      /// The part of the box this rank holds (the whole grid on one rank).
+      const Slab &
+      slab() const;
 
       /**
        * z = G^-1 r with G the operator -L of this material on the periodic
@@ -103,14 +150,15 @@ namespace pdfem
        * the masked operator of a bounded one (Krylov solves of statics).
        * The symbol is made at the first call (dim evaluations of L on unit
        * impulses, dim^2 forward FFTs) and kept (dim^2 complex numbers per
-       * mode); each call costs dim forward and dim inverse FFTs. @p r and
-       * @p z are laid out as the displacements of apply().
+       * mode of this rank); each call costs dim forward and dim inverse
+       * FFTs. @p r and @p z are laid out as the displacements of apply().
        */
       void
       apply_periodic_inverse(const std::vector<double> &r,
                              std::vector<double>       &z);
 
-      /// The number of forward and inverse FFTs since construction.
+      /// The number of forward and inverse FFTs since construction (each
+      /// distributed transform counted once).
       std::size_t
       n_transforms() const;
 

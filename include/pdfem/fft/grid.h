@@ -28,7 +28,10 @@ namespace pdfem
      * spacing[k] (the midpoint quadrature of specs/002 §2.3).
      *
      * Nodal fields are std::vector<double>: a scalar field holds N values,
-     * a vector field dim N values, component c of node k at c N + k.
+     * a vector field dim N values, component c of node k at c N + k. An
+     * operator distributed over MPI ranks (FftOperator with several ranks)
+     * takes and returns the fields of its rank's Slab only, in the same
+     * layout with N the slab's node count.
      */
     template <int dim>
     struct Grid
@@ -55,6 +58,36 @@ namespace pdfem
       /// The position of @p node.
       std::array<double, dim>
       position(std::size_t node) const;
+    };
+
+    /**
+     * The part of a Grid one MPI rank holds: the whole planes i_0 =
+     * first_plane, ..., first_plane + n_planes - 1 of the slowest index
+     * (FFTW's MPI layout). Nodes are numbered with i_0 slowest, so the slab
+     * is the contiguous range [begin, end) of box nodes: box node begin + k
+     * is the rank's local node k. A rank may hold no plane (more ranks than
+     * planes): then begin = end.
+     */
+    struct Slab
+    {
+      unsigned int first_plane = 0;
+      unsigned int n_planes    = 0;
+      std::size_t  begin       = 0;
+      std::size_t  end         = 0;
+
+      /// end - begin.
+      std::size_t
+      n_nodes() const
+      {
+        return end - begin;
+      }
+
+      /// Whether box node @p node is in the slab.
+      bool
+      contains(const std::size_t node) const
+      {
+        return begin <= node && node < end;
+      }
     };
 
     /// The PD models the operators evaluate.

@@ -51,6 +51,10 @@ namespace pdfem
      * Two implementations give the same numbers to round-off: FftOperator
      * (convolutions by FFT, O(N log N) per evaluation, O(N) memory) and
      * DirectOperator (the neighbour sum, O(N M) for M bonds per node).
+     *
+     * "N values" below: the grid's N nodes, or the N = Slab::n_nodes()
+     * nodes of the rank's slab for an FftOperator distributed over MPI
+     * ranks (fft_operator.h).
      */
     template <int dim>
     class Operator
@@ -114,7 +118,8 @@ namespace pdfem
 
       /**
        * The bytes per grid node the operator holds (kernels, mask fields,
-       * work space), the caller's fields u and L not included.
+       * work space), the caller's fields u and L not included; per node of
+       * the rank's slab for a distributed FftOperator.
        */
       virtual double
       bytes_per_node() const = 0;
