@@ -27,7 +27,7 @@ jobs=${PDFEM_JOBS:-2}
 # factorisation of plateCrack's coupled matrix took 2.4x less time with it (doc/benchmarks/fracture.md).
 # libvtk9-dev, xvfb, xauth, fonts-dejavu-core: pdfem-plot and pdfem-render (PNG pictures, drawn
 # through a virtual X server; doc/tools.md). libfftw3-dev (with pkgconf to find it): the fft module
-# (FFT evaluation of PD operators, doc/benchmarks/fft.md); libfftw3-mpi-dev for its MPI form to come.
+# (FFT evaluation of PD operators, doc/benchmarks/fft.md); libfftw3-mpi-dev for its MPI form (slabs over the ranks).
 packages=(cmake ninja-build g++ libdeal.ii-dev libmumps-dev gmsh openmpi-bin libgtest-dev ccache libopenblas0-serial
   libvtk9-dev xvfb xauth fonts-dejavu-core libfftw3-dev libfftw3-mpi-dev pkgconf)
 missing=()

@@ -8,6 +8,7 @@
 #include <pdfem/base/thread_team.h>
 #include <pdfem/fft/fft_operator.h>
 #include <pdfem/fft/grid.h>
+#include <pdfem/fft/slab_exchange.h>
 #include <pdfem/pd/families.h>
 #include <pdfem/pd_models/interface.h>
 #include <pdfem/pd_models/lps.h>
@@ -20,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "pairwise_tools.h"
@@ -321,7 +323,11 @@ namespace pdfem
           grid.spacing[c] = body_grid.spacing[c];
         }
       n_box = grid.n_nodes();
-      body.assign(n_box, 0.);
+      // This rank's slab of the box (all of it with one rank), chi_B = 1
+      // at its grid points that are nodes (every rank has every node).
+      slab                = FFT::local_slab(grid, r.comm);
+      const std::size_t N = slab.n_nodes();
+      body.assign(N, 0.);
       const auto at = [&](const unsigned int k) {
         std::array<unsigned int, dim> i;
         for (unsigned int c = 0; c < dim; ++c)
@@ -329,10 +335,12 @@ namespace pdfem
         return grid.node(i);
       };
       for (std::size_t k = 0; k < x.size(); ++k)
-        body[at(k)] = 1.;
+        if (slab.contains(at(k)))
+          body[at(k) - slab.begin] = 1.;
       box_node.resize(f.owners.size());
       for (std::size_t o = 0; o < f.owners.size(); ++o)
         box_node[o] = at(f.owners[o]);
+      exchange = std::make_unique<FFT::SlabExchange>(box_node, slab, r.comm);
 
       // The bonds of the output's gradient fit: the grid's discrete horizon
       // (the bonds the FFT sums).
@@ -346,19 +354,32 @@ namespace pdfem
       if (!inverse_distance)
         material.influence = [](double) { return 1.; };
       FFT::FftOptions options;
-      options.threads = ThreadTeam::shared().size();
+      options.threads      = ThreadTeam::shared().size();
+      options.communicator = r.comm;
       op = std::make_unique<FFT::FftOperator<dim>>(grid, material, options);
-      lambda.assign(n_box, 1.);
+      lambda.assign(N, 1.);
       op->set_masks(body, lambda);
       op->damage(d_box, normalisation);
-      u_box.assign(dim * n_box, 0.);
-      r_box.clear(); // to_box() zeroes it at its first use
+      d_owner.resize(box_node.size());
+      exchange->pull(d_box, 1, d_owner.data());
+      u_box.assign(dim * N, 0.);
+      r_box.clear(); // push() zeroes it at its first use
       W_box.clear();
       // The paper's calibration (specs/002 eqs. 50-51): a delta-thick layer
       // of dead nodes releases A delta W_c = A G_0.
       W_c =
         damage_on ? FFT::critical_energy_density(fracture_energy, delta) : 0.;
       n_last_failed = 0;
+      failed        = FailedNodes<dim>();
+      count_operator_bytes();
+    }
+
+    template <int dim>
+    void
+    LpsFft<dim>::count_operator_bytes()
+    {
+      operator_bytes     = Utilities::MPI::sum(op->bytes(), this->region.comm);
+      largest_rank_bytes = Utilities::MPI::max(op->bytes(), this->region.comm);
     }
 
     template <int dim>
@@ -374,33 +395,15 @@ namespace pdfem
     }
 
     template <int dim>
-    template <typename Value>
-    void
-    LpsFft<dim>::to_box(const Value &value, std::vector<double> &box) const
-    {
-      // One rank's owners are all the body's nodes: the entries off them
-      // stay 0 from the first call. With several ranks the others' are
-      // summed in.
-      const bool parallel =
-        Utilities::MPI::n_mpi_processes(this->region.comm) > 1;
-      box.resize(dim * n_box, 0.);
-      if (parallel)
-        std::fill(box.begin(), box.end(), 0.);
-      for (std::size_t o = 0; o < box_node.size(); ++o)
-        for (unsigned int c = 0; c < dim; ++c)
-          box[c * n_box + box_node[o]] = value(o, c);
-      if (parallel)
-        Utilities::MPI::sum(box, this->region.comm, box);
-    }
-
-    template <int dim>
     void
     LpsFft<dim>::gather(const NodalField<dim> &u)
     {
       const PD::Families &f = *this->region.families;
-      to_box([&](const std::size_t  o,
-                 const unsigned int c) { return u(f.owners[o], c); },
-             u_box);
+      owner_values.resize(dim * f.owners.size());
+      for (std::size_t o = 0; o < f.owners.size(); ++o)
+        for (unsigned int c = 0; c < dim; ++c)
+          owner_values[dim * o + c] = u(f.owners[o], c);
+      exchange->push(owner_values.data(), dim, u_box);
     }
 
     template <int dim>
@@ -409,6 +412,8 @@ namespace pdfem
     {
       gather(u);
       op->apply(u_box, L_box);
+      L_owner.resize(dim * box_node.size());
+      exchange->pull(L_box, dim, L_owner.data());
     }
 
     template <int dim>
@@ -417,15 +422,16 @@ namespace pdfem
                               std::vector<double>       &z)
     {
       // The stiffness of the owners' rows is Delta V (-dL/du): its periodic
-      // inverse is G^-1 / Delta V. Every rank holds the whole grid.
-      to_box([&](const std::size_t  o,
-                 const unsigned int c) { return r[dim * o + c]; },
-             r_box);
+      // inverse is G^-1 / Delta V.
+      const bool first = z_box.empty();
+      exchange->push(r.data(), dim, r_box);
       op->apply_periodic_inverse(r_box, z_box);
       z.resize(dim * box_node.size());
-      for (std::size_t o = 0; o < box_node.size(); ++o)
-        for (unsigned int c = 0; c < dim; ++c)
-          z[dim * o + c] = z_box[c * n_box + box_node[o]] / node_volume;
+      exchange->pull(z_box, dim, z.data());
+      for (double &value : z)
+        value /= node_volume;
+      if (first) // the periodic inverse's symbol is made at the first call
+        count_operator_bytes();
     }
 
     template <int dim>
@@ -436,23 +442,61 @@ namespace pdfem
       if (!damage_on)
         return;
       // specs/002 eqs. 43, 63: lambda = 0 where W > W_c, irreversible; the
-      // forces of the next step use the new masks (one-step lag). Every
-      // rank holds the whole grid: the same lambda everywhere.
+      // forces of the next step use the new masks (one-step lag).
       gather(u);
       op->energy_density(u_box, W_box);
-      n_last_failed = FFT::update_integrity(W_box, W_c, lambda);
+      n_last_failed =
+        Utilities::MPI::sum(FFT::update_integrity(W_box, W_c, lambda),
+                            this->region.comm);
       if (n_last_failed > 0)
         {
           op->set_masks(body, lambda);
           op->damage(d_box, normalisation);
+          exchange->pull(d_box, 1, d_owner.data());
+          count_failed_nodes();
         }
+    }
+
+    template <int dim>
+    void
+    LpsFft<dim>::count_failed_nodes()
+    {
+      // The failed body nodes of this slab, their bounding box, then over
+      // the ranks.
+      FailedNodes<dim>        e;
+      std::array<double, dim> lo, hi;
+      lo.fill(std::numeric_limits<double>::max());
+      hi.fill(-std::numeric_limits<double>::max());
+      unsigned long         n    = 0;
+      const FFT::Grid<dim> &grid = op->grid();
+      for (std::size_t k = 0; k < slab.n_nodes(); ++k)
+        if (body[k] > 0. && !(lambda[k] > 0.))
+          {
+            const auto i = grid.indices(slab.begin + k);
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                const double x =
+                  body_grid.origin[c] + i[c] * body_grid.spacing[c];
+                lo[c] = std::min(lo[c], x);
+                hi[c] = std::max(hi[c], x);
+              }
+            ++n;
+          }
+      const MPI_Comm comm = this->region.comm;
+      e.n                 = Utilities::MPI::sum(n, comm);
+      for (unsigned int c = 0; c < dim && e.n > 0; ++c)
+        {
+          e.lo[c] = Utilities::MPI::min(lo[c], comm);
+          e.hi[c] = Utilities::MPI::max(hi[c], comm);
+        }
+      failed = e;
     }
 
     template <int dim>
     double
     LpsFft<dim>::damage(const std::size_t o, const NodalField<dim> &) const
     {
-      return d_box[box_node[o]];
+      return d_owner[o];
     }
 
     template <int dim>
@@ -472,11 +516,13 @@ namespace pdfem
                          "--restart",
                          "the checkpoint's node integrity has " +
                            std::to_string(saved.size()) +
-                           " box nodes, this run's FFT box " +
+                           " box nodes on this rank, this run's FFT slab " +
                            std::to_string(lambda.size()));
       lambda = saved;
       op->set_masks(body, lambda);
       op->damage(d_box, normalisation);
+      exchange->pull(d_box, 1, d_owner.data());
+      count_failed_nodes();
     }
 
     template <int dim>
@@ -488,7 +534,7 @@ namespace pdfem
     {
       for (std::size_t o = begin; o < end; ++o)
         for (unsigned int c = 0; c < dim; ++c)
-          f[dim * o + c] = -node_volume * L_box[c * n_box + box_node[o]];
+          f[dim * o + c] = -node_volume * L_owner[dim * o + c];
     }
 
     template <int dim>
@@ -509,7 +555,77 @@ namespace pdfem
     void
     LpsFft<dim>::prepare_results(const NodalField<dim> &u)
     {
+      // The fit of "lps" over the grid's bonds within the body, each with
+      // omega Delta V: G = [sum omega eta (x) xi] [sum omega xi (x) xi]^-1,
+      // eta = u(x + xi) - u(x), for every owner. The bonds reach other
+      // ranks' slabs: with several ranks u and chi_B of the whole box are
+      // summed on every rank for this once (output only), and freed.
       gather(u);
+      const bool parallel =
+        Utilities::MPI::n_mpi_processes(this->region.comm) > 1;
+      std::vector<double> whole;
+      if (parallel)
+        {
+          whole.assign((dim + 1) * n_box, 0.);
+          const std::size_t N = slab.n_nodes();
+          for (std::size_t k = 0; k < N; ++k)
+            {
+              for (unsigned int c = 0; c < dim; ++c)
+                whole[c * n_box + slab.begin + k] = u_box[c * N + k];
+              whole[dim * n_box + slab.begin + k] = body[k];
+            }
+          Utilities::MPI::sum(whole, this->region.comm, whole);
+        }
+      // With one rank the slab is the box.
+      const double *u_all = parallel ? whole.data() : u_box.data();
+      const double *body_all =
+        parallel ? whole.data() + dim * n_box : body.data();
+
+      const FFT::Grid<dim> &grid = op->grid();
+      const PD::Families   &f    = *this->region.families;
+      gradient.resize(box_node.size());
+      const auto fit = [&](const std::size_t o) {
+        const auto       &i = body_grid.index[f.owners[o]];
+        const std::size_t k = box_node[o];
+        Tensor<2, dim>    A, B;
+        for (const auto &p : stencil)
+          {
+            std::array<unsigned int, dim> j;
+            bool                          inside = true;
+            for (unsigned int c = 0; c < dim && inside; ++c)
+              {
+                const long jc = long(i[c]) + p.p[c];
+                inside        = jc >= 0 && jc < long(body_grid.n[c]);
+                j[c]          = static_cast<unsigned int>(jc);
+              }
+            if (!inside)
+              continue;
+            const std::size_t m = grid.node(j);
+            if (!(body_all[m] > 0.))
+              continue;
+            Tensor<1, dim> xi, eta;
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                xi[c]  = p.xi[c];
+                eta[c] = u_all[c * n_box + m] - u_all[c * n_box + k];
+              }
+            const double w = inverse_distance ? 1. / p.length : 1.;
+            A += w * outer_product(eta, xi);
+            B += w * outer_product(xi, xi);
+          }
+        gradient[o] =
+          std::abs(determinant(B)) <= 1e-12 * std::pow(trace(B), dim) ?
+            Tensor<2, dim>() :
+            A * invert(B);
+      };
+      ThreadTeam &team = ThreadTeam::shared();
+      team.run([&](const unsigned int member) {
+        const std::size_t n = box_node.size();
+        for (std::size_t o = n * member / team.size();
+             o < n * (member + 1) / team.size();
+             ++o)
+          fit(o);
+      });
     }
 
     template <int dim>
@@ -517,42 +633,7 @@ namespace pdfem
     LpsFft<dim>::displacement_gradient(const std::size_t o,
                                        const NodalField<dim> &) const
     {
-      // The fit of "lps" over the grid's bonds within the body, each with
-      // omega Delta V: G = [sum omega eta (x) xi] [sum omega xi (x) xi]^-1,
-      // eta = u(x + xi) - u(x), from the displacements of the last
-      // prepare_results() (the box holds every node's).
-      const auto       &i = body_grid.index[this->region.families->owners[o]];
-      const std::size_t k = box_node[o];
-      const FFT::Grid<dim> &grid = op->grid();
-      Tensor<2, dim>        A, B;
-      for (const auto &p : stencil)
-        {
-          std::array<unsigned int, dim> j;
-          bool                          inside = true;
-          for (unsigned int c = 0; c < dim && inside; ++c)
-            {
-              const long jc = long(i[c]) + p.p[c];
-              inside        = jc >= 0 && jc < long(body_grid.n[c]);
-              j[c]          = static_cast<unsigned int>(jc);
-            }
-          if (!inside)
-            continue;
-          const std::size_t m = grid.node(j);
-          if (!(body[m] > 0.))
-            continue;
-          Tensor<1, dim> xi, eta;
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              xi[c]  = p.xi[c];
-              eta[c] = u_box[c * n_box + m] - u_box[c * n_box + k];
-            }
-          const double w = inverse_distance ? 1. / p.length : 1.;
-          A += w * outer_product(eta, xi);
-          B += w * outer_product(xi, xi);
-        }
-      if (std::abs(determinant(B)) <= 1e-12 * std::pow(trace(B), dim))
-        return Tensor<2, dim>();
-      return A * invert(B);
+      return gradient[o];
     }
 
     template <int dim>
@@ -563,42 +644,20 @@ namespace pdfem
     }
 
     template <int dim>
-    FailedNodes<dim>
-    LpsFft<dim>::failed_nodes() const
-    {
-      FailedNodes<dim>               e;
-      const std::vector<Point<dim>> &x = *this->region.position;
-      for (std::size_t k = 0; k < x.size(); ++k)
-        {
-          if (lambda[op->grid().node(body_grid.index[k])] > 0.)
-            continue;
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              e.lo[c] = e.n ? std::min(e.lo[c], x[k][c]) : x[k][c];
-              e.hi[c] = e.n ? std::max(e.hi[c], x[k][c]) : x[k][c];
-            }
-          ++e.n;
-        }
-      return e;
-    }
-
-    template <int dim>
     std::vector<std::pair<std::string, double>>
     LpsFft<dim>::constants() const
     {
-      const double                                bytes = op->bytes_per_node();
-      std::vector<std::pair<std::string, double>> failed;
+      std::vector<std::pair<std::string, double>> extent;
       if (damage_on)
         {
-          const FailedNodes<dim>    extent = failed_nodes();
-          const std::array<char, 3> axis   = {{'x', 'y', 'z'}};
-          failed.emplace_back("failed nodes", double(extent.n));
-          for (unsigned int c = 0; c < dim && extent.n > 0; ++c)
+          const std::array<char, 3> axis = {{'x', 'y', 'z'}};
+          extent.emplace_back("failed nodes", double(failed.n));
+          for (unsigned int c = 0; c < dim && failed.n > 0; ++c)
             {
-              failed.emplace_back(std::string("failed nodes min ") + axis[c],
-                                  extent.lo[c]);
-              failed.emplace_back(std::string("failed nodes max ") + axis[c],
-                                  extent.hi[c]);
+              extent.emplace_back(std::string("failed nodes min ") + axis[c],
+                                  failed.lo[c]);
+              extent.emplace_back(std::string("failed nodes max ") + axis[c],
+                                  failed.hi[c]);
             }
         }
       std::vector<std::pair<std::string, double>> all = {
@@ -610,10 +669,11 @@ namespace pdfem
         {"B", B},
         {"fft box nodes", double(n_box)},
         {"critical energy density", W_c},
-        {"fft bytes per box node", bytes},
+        {"fft bytes per box node", operator_bytes / double(n_box)},
         {"fft bytes per body node",
-         bytes * double(n_box) / double(this->region.position->size())}};
-      all.insert(all.end(), failed.begin(), failed.end());
+         operator_bytes / double(this->region.position->size())},
+        {"fft bytes per rank (largest)", largest_rank_bytes}};
+      all.insert(all.end(), extent.begin(), extent.end());
       return all;
     }
 

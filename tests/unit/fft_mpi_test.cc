@@ -12,9 +12,13 @@
 // periodic inverse's s then crosses ranks), and a grid of 3 planes (with 4
 // ranks a rank holds none). Also: the slabs tile the box in rank order,
 // local_slab() = slab(), and the memory per rank falls with the ranks.
+// SlabExchange: every box node owned by one rank in a scattered order
+// (node % ranks, reversed) reaches its slab and comes back, 2 and 3
+// components, with an empty slab on 4 ranks.
 // Run on 1, 2 and 4 ranks (tests/CMakeLists.txt: unit.FftMpi.*,
 // unit.np2.FftMpi, unit.np4.FftMpi).
 #include <pdfem/fft/fft_operator.h>
+#include <pdfem/fft/slab_exchange.h>
 
 #include <algorithm>
 #include <cmath>
@@ -321,4 +325,58 @@ TEST(FftMpi, MoreRanksThanPlanes)
       EXPECT_EQ(s.n_nodes(), 0u);
     }
   compare_models(g, 1.3, false);
+}
+
+TEST(FftMpi, SlabExchangeMovesValuesBothWays)
+{
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  for (const std::array<unsigned int, 3> n :
+       {std::array<unsigned int, 3>{{7, 4, 3}},
+        std::array<unsigned int, 3>{{3, 5, 2}}}) // 4 ranks: one holds none
+    {
+      Grid<3> grid;
+      grid.n          = n;
+      grid.spacing    = {{1., 1., 1.}};
+      const Slab slab = local_slab(grid, MPI_COMM_WORLD);
+      // This rank's points: every ranks-th box node, in reverse order.
+      std::vector<std::size_t> points;
+      for (std::size_t k = grid.n_nodes(); k-- > 0;)
+        if (int(k % n_ranks()) == rank)
+          points.push_back(k);
+      const SlabExchange exchange(points, slab, MPI_COMM_WORLD);
+      EXPECT_EQ(exchange.n_points(), points.size());
+      const auto value = [](const std::size_t k, const unsigned int c) {
+        return 1000. * double(c) + double(k) + 0.5;
+      };
+      for (const unsigned int nc : {2u, 3u})
+        {
+          std::vector<double> at_points(nc * points.size());
+          for (std::size_t p = 0; p < points.size(); ++p)
+            for (unsigned int c = 0; c < nc; ++c)
+              at_points[nc * p + c] = value(points[p], c);
+          std::vector<double> field;
+          exchange.push(at_points.data(), nc, field);
+          ASSERT_EQ(field.size(), nc * slab.n_nodes());
+          double error = 0.;
+          for (std::size_t k = 0; k < slab.n_nodes(); ++k)
+            for (unsigned int c = 0; c < nc; ++c)
+              error = std::max(error,
+                               std::abs(field[c * slab.n_nodes() + k] -
+                                        value(slab.begin + k, c)));
+          EXPECT_EQ(max_over_ranks(error), 0.);
+          // Back: the slab's field, doubled, at the points.
+          for (double &v : field)
+            v *= 2.;
+          std::vector<double> back(nc * points.size(), 0.);
+          exchange.pull(field, nc, back.data());
+          error = 0.;
+          for (std::size_t p = 0; p < points.size(); ++p)
+            for (unsigned int c = 0; c < nc; ++c)
+              error =
+                std::max(error,
+                         std::abs(back[nc * p + c] - 2. * value(points[p], c)));
+          EXPECT_EQ(max_over_ranks(error), 0.);
+        }
+    }
 }

@@ -21,6 +21,7 @@ namespace pdfem
   {
     template <int dim>
     class FftOperator;
+    class SlabExchange;
   } // namespace FFT
 
   namespace PDModels
@@ -82,9 +83,12 @@ namespace pdfem
      * A row model (Layout::family_elements false): prepare_forces()
      * evaluates L for every grid point once per state (one FFT operator
      * application, FFTW threads = the thread team's size), and forces()
-     * hands each owner chunk its rows. With several ranks, the owners'
-     * displacements are summed into the grid on every rank (one allreduce)
-     * and every rank evaluates the whole grid.
+     * hands each owner chunk its rows. With several ranks the box is split
+     * into slabs of whole planes (FFT::FftOperator over region.comm,
+     * FFTW's MPI interface): each rank holds and evaluates its slab only,
+     * the owners' displacements go to the slabs that hold their grid
+     * points and the forces come back (FFT::SlabExchange, one
+     * MPI_Alltoallv each way per evaluation).
      *
      * No bonds (Layout::bonds false): the FFT sums over the grid's discrete
      * horizon (FFT::horizon_offsets()), so the coupled system builds no
@@ -234,6 +238,14 @@ namespace pdfem
         return box_node[o];
       }
 
+      /// This rank's slab of the box (all of it with one rank): the box
+      /// nodes [begin, end) that the fields below hold.
+      const FFT::Slab &
+      slab_of_box() const
+      {
+        return slab;
+      }
+
       /// The FFT operator (its grid, material and current masks).
       const FFT::FftOperator<dim> &
       fft_operator() const
@@ -241,7 +253,7 @@ namespace pdfem
         return *op;
       }
 
-      /// chi_B and lambda of every box node.
+      /// chi_B and lambda of the slab's box nodes.
       const std::vector<double> &
       body_mask() const
       {
@@ -254,7 +266,8 @@ namespace pdfem
         return lambda;
       }
 
-      /// W of every box node at the last commit_state() (empty before).
+      /// W of the slab's box nodes at the last commit_state() (empty
+      /// before).
       const std::vector<double> &
       energy_density() const
       {
@@ -275,10 +288,13 @@ namespace pdfem
         return damage_on;
       }
 
-      /// The failed body nodes and their bounding box (where the cracks
-      /// ran).
+      /// The failed body nodes of all ranks and their bounding box (where
+      /// the cracks ran), as of the last commit_state().
       FailedNodes<dim>
-      failed_nodes() const;
+      failed_nodes() const
+      {
+        return failed;
+      }
 
       /// The nodes the last commit_state() failed.
       std::size_t
@@ -298,28 +314,43 @@ namespace pdfem
       double                   fracture_energy = 0., W_c = 0.;
       FFT::DamageNormalisation normalisation{};
       std::size_t              n_last_failed = 0;
-      std::vector<double>      body, lambda, W_box, d_box;
+      /// chi_B, lambda, W and the damage index of the slab's box nodes.
+      std::vector<double> body, lambda, W_box, d_box;
 
-      /// The owners' @p u into u_box (all ranks: one allreduce).
+      /// The owners' @p u into u_box (the slabs that hold them).
       void
       gather(const NodalField<dim> &u);
 
-      /// value(o, c) of every owner o and component c into @p box
-      /// (dim N_box, component-major; 0 off the owners), summed over the
-      /// ranks (one allreduce).
-      template <typename Value>
+      /// The operator's bytes summed over the ranks and the largest rank's
+      /// (collective).
       void
-      to_box(const Value &value, std::vector<double> &box) const;
+      count_operator_bytes();
+
+      /// failed: the failed nodes of every slab (collective).
+      void
+      count_failed_nodes();
 
       NodeGrid<dim>                 body_grid;
       std::array<unsigned int, dim> box{};
       std::size_t                   n_box = 0;
       /// Per owner: its grid point in the box.
       std::vector<std::size_t> box_node;
-      /// The grid displacement (dim N_box, component-major) and L.
+      /// This rank's slab, and the plan that moves the owners' values to
+      /// the slabs and back.
+      FFT::Slab                          slab;
+      std::unique_ptr<FFT::SlabExchange> exchange;
+      /// The slab's displacement (dim N_slab, component-major) and L.
       std::vector<double> u_box, L_box;
-      /// precondition()'s residual and correction on the box.
-      std::vector<double>                    r_box, z_box;
+      /// precondition()'s residual and correction on the slab.
+      std::vector<double> r_box, z_box;
+      /// Per owner (interleaved): its displacement (scratch), its L and its
+      /// damage index, and its gradient of the last prepare_results().
+      std::vector<double>                 owner_values, L_owner, d_owner;
+      std::vector<dealii::Tensor<2, dim>> gradient;
+      FailedNodes<dim>                    failed;
+      /// The FFT operator's bytes over all ranks and on the largest rank.
+      double                                 operator_bytes     = 0.;
+      double                                 largest_rank_bytes = 0.;
       std::unique_ptr<FFT::FftOperator<dim>> op;
       /// The grid offsets of the discrete horizon (the gradient's bonds).
       std::vector<FFT::Offset<dim>> stencil;
