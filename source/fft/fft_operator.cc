@@ -542,7 +542,7 @@ namespace pdfem
       fields({o.beta, o.body, o.p, o.m, o.minv, o.theta});
       reals += double(o.real_size);                     // real buffer
       reals += 2. * double(o.spectra.size()) * o.alloc; // spectra
-      reals += 2. * double(o.periodic_inverse.size());  // G^-1
+      reals += double(o.periodic_inverse.size());       // G^-1
       return 8. * reals;
     }
 

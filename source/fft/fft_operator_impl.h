@@ -341,11 +341,13 @@ namespace pdfem
       std::vector<double>              p, m, minv, theta;
       double                           A = 0., B = 0.;
 
-      // apply_periodic_inverse(): G^(kappa)^-1, dim x dim per mode (row
-      // major), made at the first use (a rank may hold no mode: the flag,
-      // not the size, says whether it is made, so that all ranks agree).
-      std::vector<std::complex<double>> periodic_inverse;
-      bool                              have_periodic_inverse = false;
+      // apply_periodic_inverse(): G^(kappa)^-1, real and symmetric, its
+      // dim (dim + 1) / 2 entries per mode (the diagonal, then the upper
+      // triangle), made at the first use (a rank may hold no mode: the
+      // flag, not the size, says whether it is made, so that all ranks
+      // agree).
+      std::vector<double> periodic_inverse;
+      bool                have_periodic_inverse = false;
     };
   } // namespace FFT
 } // namespace pdfem

@@ -5,6 +5,7 @@
 #include <pdfem/fft/fft_operator.h>
 
 #include <array>
+#include <cmath>
 #include <complex>
 #include <stdexcept>
 #include <vector>
@@ -19,19 +20,38 @@ namespace pdfem
     {
       using Complex = std::complex<double>;
 
-      /// In place: a (n x n, row major, n = 2 or 3) becomes its inverse;
-      /// false if it is singular against its own size.
-      template <int n>
-      bool
-      invert(Complex *a)
+      /// The entries of a symmetric dim x dim matrix kept per mode: the
+      /// diagonal, then (0,1) (2D); the diagonal, then (0,1), (0,2), (1,2)
+      /// (3D).
+      template <int dim>
+      constexpr unsigned int n_packed = dim *(dim + 1) / 2;
+
+      /// The packed index of (i, j).
+      template <int dim>
+      constexpr unsigned int
+      packed(const unsigned int i, const unsigned int j)
       {
-        Complex inv[n * n];
-        if constexpr (n == 2)
+        if (i == j)
+          return i;
+        const unsigned int lo = i < j ? i : j, hi = i < j ? j : i;
+        return dim == 2 ? 2 : 3 + lo + hi - 1; // (0,1) 3, (0,2) 4, (1,2) 5
+      }
+
+      /// In place: the packed symmetric matrix a becomes its inverse; false
+      /// if it is singular against its own size.
+      template <int dim>
+      bool
+      invert_symmetric(double *a)
+      {
+        double m[dim][dim], inv[dim][dim];
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            m[i][j] = a[packed<dim>(i, j)];
+        if constexpr (dim == 2)
           {
-            inv[0] = a[3];
-            inv[1] = -a[1];
-            inv[2] = -a[2];
-            inv[3] = a[0];
+            inv[0][0] = m[1][1];
+            inv[0][1] = inv[1][0] = -m[0][1];
+            inv[1][1]             = m[0][0];
           }
         else
           for (int i = 0; i < 3; ++i)
@@ -40,19 +60,19 @@ namespace pdfem
                 // adjugate: the cofactor of (j, i)
                 const int r0 = (j + 1) % 3, r1 = (j + 2) % 3;
                 const int c0 = (i + 1) % 3, c1 = (i + 2) % 3;
-                inv[i * 3 + j] = a[r0 * 3 + c0] * a[r1 * 3 + c1] -
-                                 a[r0 * 3 + c1] * a[r1 * 3 + c0];
+                inv[i][j] = m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0];
               }
-        Complex det = 0.;
-        for (int j = 0; j < n; ++j)
-          det += a[j] * inv[j * n];
-        double scale = 0.;
-        for (int i = 0; i < n; ++i)
-          scale += std::abs(a[i * n + i]);
-        if (!(std::abs(det) > 1e-12 * std::pow(scale / n, n)))
+        double det = 0., scale = 0.;
+        for (unsigned int j = 0; j < dim; ++j)
+          {
+            det += m[0][j] * inv[j][0];
+            scale += std::abs(m[j][j]);
+          }
+        if (!(std::abs(det) > 1e-12 * std::pow(scale / dim, dim)))
           return false;
-        for (int k = 0; k < n * n; ++k)
-          a[k] = inv[k] / det;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = i; j < dim; ++j)
+            a[packed<dim>(i, j)] = inv[i][j] / det;
         return true;
       }
     } // namespace
@@ -69,16 +89,19 @@ namespace pdfem
       if (this->material_.model == Model::nonlinear_bond_based)
         throw std::logic_error("FFT: the periodic inverse is defined for the "
                                "linear models only");
-      constexpr unsigned int nn = dim * dim;
+      constexpr unsigned int np = n_packed<dim>;
       if (!o.have_periodic_inverse)
         {
           // G^ column by column: -L of a unit impulse at node 0 in
           // direction j, transformed, is column j of the symbol (the
           // operator is translation invariant once every mask is 1). Node
-          // 0 is on the first rank's slab; each rank keeps its modes.
+          // 0 is on the first rank's slab; each rank keeps its modes. The
+          // stencil is even (xi and -xi carry the same coefficients), so
+          // G^ is real and symmetric: its upper triangle's real parts are
+          // kept (the imaginary parts and the asymmetry are round-off).
           const std::vector<double> beta = o.beta, body = o.body;
           set_masks(std::vector<double>(o.N, 1.), std::vector<double>(o.N, 1.));
-          o.periodic_inverse.assign(nn * o.Nc, 0.);
+          o.periodic_inverse.assign(np * o.Nc, 0.);
           std::vector<double> impulse(dim * o.N, 0.), L;
           const bool          origin = o.slab.contains(0);
           for (unsigned int j = 0; j < dim; ++j)
@@ -88,14 +111,13 @@ namespace pdfem
               apply(impulse, L);
               if (origin)
                 impulse[j * o.N] = 0.;
-              for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int i = 0; i <= j; ++i)
                 {
                   o.fill([&](std::size_t k) { return -L[i * o.N + k]; });
                   fftw_complex *s = o.spectrum(i);
                   o.forward(s);
                   for (std::size_t m = 0; m < o.Nc; ++m)
-                    o.periodic_inverse[m * nn + i * dim + j] =
-                      Complex(s[m][0], s[m][1]);
+                    o.periodic_inverse[m * np + packed<dim>(i, j)] = s[m][0];
                 }
             }
           set_masks(body, beta); // beta = chi_B lambda: the same masks
@@ -109,22 +131,21 @@ namespace pdfem
           double               s  = 0.;
           if (m1 >= 0)
             for (unsigned int i = 0; i < dim; ++i)
-              s += o.periodic_inverse[m1 * nn + i * dim + i].real() / dim;
+              s += o.periodic_inverse[m1 * np + i] / dim;
           s                       = o.sum_over_ranks(s);
           k[dim - 1]              = 0;
           const std::ptrdiff_t m0 = o.local_mode(k);
           if (m0 >= 0)
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
-                o.periodic_inverse[m0 * nn + i * dim + j] = i == j ? s : 0.;
+            for (unsigned int i = 0; i < np; ++i)
+              o.periodic_inverse[m0 * np + i] = i < dim ? s : 0.;
           internal::parallel_for(
             o.threads, o.Nc, [&](std::size_t b, std::size_t e) {
               for (std::size_t m = b; m < e; ++m)
                 {
-                  Complex *a = &o.periodic_inverse[m * nn];
-                  if (!invert<dim>(a))
-                    for (unsigned int k = 0; k < nn; ++k) // not expected
-                      a[k] = k % (dim + 1) == 0 ? 1. / s : 0.;
+                  double *a = &o.periodic_inverse[m * np];
+                  if (!invert_symmetric<dim>(a))
+                    for (unsigned int i = 0; i < np; ++i) // not expected
+                      a[i] = i < dim ? 1. / s : 0.;
                 }
             });
           o.have_periodic_inverse = true;
@@ -143,8 +164,8 @@ namespace pdfem
                              [&](std::size_t b, std::size_t e) {
                                for (std::size_t m = b; m < e; ++m)
                                  {
-                                   const Complex *a =
-                                     &o.periodic_inverse[m * nn];
+                                   const double *a =
+                                     &o.periodic_inverse[m * np];
                                    Complex x[dim];
                                    for (unsigned int j = 0; j < dim; ++j)
                                      x[j] = Complex(h[j][m][0], h[j][m][1]);
@@ -152,7 +173,7 @@ namespace pdfem
                                      {
                                        Complex y = 0.;
                                        for (unsigned int j = 0; j < dim; ++j)
-                                         y += a[i * dim + j] * x[j];
+                                         y += a[packed<dim>(i, j)] * x[j];
                                        h[i][m][0] = scale * y.real();
                                        h[i][m][1] = scale * y.imag();
                                      }

@@ -143,14 +143,16 @@ namespace pdfem
       /**
        * z = G^-1 r with G the operator -L of this material on the periodic
        * box with every mask 1 (a translation-invariant operator: its
-       * Fourier symbol G^(kappa) is a Hermitian dim x dim matrix per mode),
+       * Fourier symbol G^(kappa) is a real symmetric dim x dim matrix per
+       * mode, the stencil being even),
        * the mode kappa = 0 (the rigid translations, where G^ = 0) replaced
        * by s I, s the mean eigenvalue of the lowest nonzero mode. The
        * inverse of the operator of an unbounded body: a preconditioner for
        * the masked operator of a bounded one (Krylov solves of statics).
        * The symbol is made at the first call (dim evaluations of L on unit
-       * impulses, dim^2 forward FFTs) and kept (dim^2 complex numbers per
-       * mode of this rank); each call costs dim forward and dim inverse
+       * impulses, dim (dim + 1) / 2 forward FFTs) and its inverse kept
+       * (dim (dim + 1) / 2 reals per mode of this rank: 24 bytes per box
+       * node in 3D, 12 in 2D); each call costs dim forward and dim inverse
        * FFTs. @p r and @p z are laid out as the displacements of apply().
        */
       void
