@@ -20,19 +20,6 @@ namespace pdfem
   {
     using namespace dealii;
 
-    namespace
-    {
-      template <int dim>
-      Point<3>
-      to_3d(const Point<dim> &p)
-      {
-        Point<3> q;
-        for (unsigned int d = 0; d < dim; ++d)
-          q[d] = p[d];
-        return q;
-      }
-    } // namespace
-
     template <int dim>
     void
     CoupledSystem<dim>::Impl::add_to_matrix(
@@ -369,6 +356,10 @@ namespace pdfem
                                     bc.boundary_ids.end(),
                                     id) == bc.boundary_ids.end())
                         continue;
+                      if (c < traction_layers.size() &&
+                          traction_layers[c].active &&
+                          cell_pd[cell->active_cell_index()])
+                        continue; // a body force in the layer (below)
                       if (!reinitialised)
                         {
                           face_values.reinit(cell, face);
@@ -403,6 +394,7 @@ namespace pdfem
                     }
                 }
             }
+          add_traction_layers(t);
         }
       if (body_fn)
         {

@@ -50,16 +50,6 @@ namespace pdfem
 
     namespace
     {
-      template <int dim>
-      Point<3>
-      to_3d(const Point<dim> &p)
-      {
-        Point<3> q;
-        for (unsigned int d = 0; d < dim; ++d)
-          q[d] = p[d];
-        return q;
-      }
-
       /// Whether a muparser expression mentions the variable t.
       bool
       depends_on_time(const std::string &expression)

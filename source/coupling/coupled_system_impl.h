@@ -40,6 +40,17 @@ namespace pdfem
   {
     using dealii::types::global_dof_index;
 
+    /// @p p as a point of 3D space (the muparser functions take x, y, z).
+    template <int dim>
+    inline dealii::Point<3>
+    to_3d(const dealii::Point<dim> &p)
+    {
+      dealii::Point<3> q;
+      for (unsigned int d = 0; d < dim; ++d)
+        q[d] = p[d];
+      return q;
+    }
+
     /// State of the dynamic methods (coupled_system_dynamics.cc).
     struct DynamicData;
 
@@ -200,6 +211,12 @@ namespace pdfem
       /// Tractions and body force at load factor @p t, into f_ext.
       void
       assemble_external(double t);
+      /// traction_layers (after the model's initialisation).
+      void
+      make_traction_layers();
+      /// The traction layers' body forces at @p t, added to f_ext.
+      void
+      add_traction_layers(double t);
       /// f_int(u) = K_FE u + PD(u), into f_int (owned).
       void
       compute_internal_force(const dealii::TrilinosWrappers::MPI::Vector &u);
@@ -408,6 +425,18 @@ namespace pdfem
       std::vector<std::vector<unsigned int>>                  set_nodes;
       std::vector<std::unique_ptr<dealii::FunctionParser<3>>> traction_fn;
       std::unique_ptr<dealii::FunctionParser<3>>              body_fn;
+      /// Per traction condition with PDModels::Layout::traction_layer: its
+      /// owned layer nodes, the outward normal of each (its nearest
+      /// boundary node's) and the layer's thickness V / A
+      /// (coupled_system_traction_layer.cc).
+      struct TractionLayer
+      {
+        bool                                active = false;
+        std::vector<unsigned int>           nodes;
+        std::vector<dealii::Tensor<1, dim>> normal;
+        double                              thickness = 0.;
+      };
+      std::vector<TractionLayer> traction_layers;
 
       // ----- linear algebra
       std::vector<dealii::Tensor<2, dim>> block_inverse; // per owned node

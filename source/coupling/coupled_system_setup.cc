@@ -473,6 +473,7 @@ namespace pdfem
       impl->make_boundary_conditions();
       impl->make_pd_boundary();
       impl->make_families();
+      impl->make_traction_layers();
       impl->make_pd_chunks();
       impl->make_sparsity();
       impl->update_held();

@@ -37,6 +37,7 @@ namespace pdfem
                           "dilatation and the force state: 1/r (the FFT "
                           "operator's default, specs/002 §1.4) or 1.");
         declare_lattice_parameters(prm);
+        declare_traction_layer_parameter(prm);
         prm.leave_subsection();
       }
     } // namespace
@@ -49,6 +50,7 @@ namespace pdfem
       inverse_distance = prm.get("Influence function") == "1/r";
       uniform_volumes  = prm.get("Nodal volumes") == "uniform";
       dirichlet_layer  = prm.get_double("Dirichlet layer");
+      traction_layer   = prm.get_double("Traction layer");
       prm.leave_subsection();
     }
 
@@ -60,6 +62,7 @@ namespace pdfem
       l.uniform_horizon  = true;
       l.family_elements  = true;
       l.dirichlet_layer  = dirichlet_layer;
+      l.traction_layer   = traction_layer;
       l.nodal_body_force = true;
       l.free_crack_faces = false;
       return l;

@@ -219,6 +219,7 @@ namespace pdfem
       prm.enter_subsection("LPS");
       inverse_distance = prm.get("Influence function") == "1/r";
       dirichlet_layer  = prm.get_double("Dirichlet layer");
+      traction_layer   = prm.get_double("Traction layer");
       const bool cells = prm.get("Nodal volumes") == "cells";
       prm.leave_subsection();
       prm.enter_subsection("LPS fft");
@@ -263,6 +264,7 @@ namespace pdfem
       Layout l;
       l.uniform_horizon  = true;
       l.dirichlet_layer  = dirichlet_layer;
+      l.traction_layer   = traction_layer;
       l.nodal_body_force = true;
       l.free_crack_faces = false;
       l.history          = damage_on;

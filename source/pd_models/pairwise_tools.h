@@ -38,6 +38,21 @@ namespace pdfem
                         "only.");
     }
 
+    /// `Traction layer` (a model that reads it into
+    /// Layout::traction_layer declares it).
+    inline void
+    declare_traction_layer_parameter(dealii::ParameterHandler &prm)
+    {
+      prm.declare_entry("Traction layer",
+                        "0",
+                        dealii::Patterns::Double(0.),
+                        "Tractions on the PD cells' boundary faces act as a "
+                        "body force t / l on every node within this many "
+                        "horizons of the boundary (the embedded constraints "
+                        "of the FFT method; l the layer's volume over the "
+                        "boundary's area); 0: on the boundary faces.");
+    }
+
     /// The layout of a pairwise bond model: one horizon, bonds acting on
     /// both ends, prescribed values within @p dirichlet_layer horizons of
     /// their boundary, nodal body forces, crack faces its own.

@@ -11,6 +11,9 @@
 //   of more than a horizon;
 // - the system stores no bonds, and the output's gradient (fitted on the
 //   grid) is exact for affine fields, also on 2 ranks;
+// - LPS/Traction layer: the tractions of an edge act on the nodes within
+//   a horizon of it, each t V_k / l, with the exact resultant (lps and lps
+//   fft, also on 2 ranks);
 // - refused with one InputError naming Peridynamics/Model: nodes off a
 //   uniform grid (jittered), FE cells, Nodal volumes = cells, broken bonds
 //   and the tangent.
@@ -213,6 +216,80 @@ namespace
       box, {"1e-3*x + 2e-3*z", "-1e-3*y + 1", "4e-3*x + 5e-4*y"}, G3);
     EXPECT_LT(error3, 1e-14);
     EXPECT_EQ(bonds3, 0u);
+  }
+
+  /// External force at every node of a 2 x 1 plate of 20 x 10 cells (h =
+  /// 0.1, all PD, model @p name, m = 3.015): normal traction 5 on the
+  /// right edge, x traction -5 on the left one, `LPS/Traction layer` =
+  /// @p layer.
+  std::vector<Tensor<1, 2>>
+  traction_forces(const std::string &name, const std::string &layer)
+  {
+    parallel::shared::Triangulation<2> tria(MPI_COMM_WORLD);
+    GridGenerator::subdivided_hyper_rectangle(
+      tria, {20, 10}, Point<2>(), Point<2>(2., 1.), true);
+    Coupling::Settings<2> settings = body_settings<2>(
+      0.3,
+      3.015,
+      make_model<2>(name,
+                    {{"LPS/Nodal volumes", "uniform"},
+                     {"LPS/Traction layer", layer}}));
+    settings.source_file = "test.prm";
+    Coupling::BoundaryCondition<2> right, left;
+    right.name         = "right";
+    right.boundary_ids = {1};
+    right.component    = 2; // normal
+    right.expression   = "5";
+    left.name          = "left";
+    left.boundary_ids  = {0};
+    left.component     = 0;
+    left.expression    = "-5";
+    settings.traction  = {right, left};
+    Coupling::CoupledSystem<2> system(tria,
+                                      std::vector<bool>(tria.n_active_cells(),
+                                                        true),
+                                      settings);
+    Vector f;
+    system.external_force(0., f);
+    std::vector<Tensor<1, 2>> forces(system.size().n_nodes);
+    for (unsigned int k = 0; k < forces.size(); ++k)
+      forces[k] = system.node_displacement(f, k);
+    return forces;
+  }
+
+  TEST(TractionLayer, CarriesTheResultantOnTheNodesWithinTheLayer)
+  {
+    // The layer: the 4 columns within delta = 0.3015 of each edge, 44
+    // nodes of volume 0.01, thickness V / A = 0.44: f = 5 0.01 / 0.44 on
+    // each, the resultant 5 A exactly; without a layer only the edges'
+    // nodes are loaded, with the same resultant.
+    for (const std::string name : {"lps fft", "lps"})
+      for (const std::string layer : {"1", "0"})
+        {
+          const auto   forces = traction_forces(name, layer);
+          const double f_node = 5. * 0.01 / 0.44;
+          double       right = 0., left = 0., error = 0.;
+          unsigned int loaded = 0;
+          for (unsigned int k = 0; k < forces.size(); ++k)
+            {
+              // x of node k from the regular numbering is not known here:
+              // classify by the force itself and check its size.
+              const double fx = forces[k][0];
+              EXPECT_EQ(forces[k][1], 0.) << name << ", layer " << layer;
+              if (fx > 0.)
+                right += fx;
+              else
+                left += fx;
+              if (fx != 0.)
+                ++loaded;
+              if (layer == "1" && fx != 0.)
+                error = std::max(error, std::abs(std::abs(fx) - f_node));
+            }
+          EXPECT_NEAR(right, 5., 1e-12) << name << ", layer " << layer;
+          EXPECT_NEAR(left, -5., 1e-12) << name << ", layer " << layer;
+          EXPECT_EQ(loaded, layer == "1" ? 88u : 22u) << name;
+          EXPECT_LT(error, 1e-14) << name;
+        }
   }
 
   /// The InputError's message of @p make(), "" if none is thrown.

@@ -145,6 +145,12 @@ namespace pdfem
       /// displacements it needs itself (prepare_forces(),
       /// prepare_results()) and cannot break single bonds.
       bool bonds = true;
+      /// Tractions on the boundary faces of PD cells act as a body force
+      /// t / l on the PD nodes within this many horizons of the boundary
+      /// (the embedded constraints of specs/002 §2.5; l the layer's volume
+      /// over the boundary's area, so that the resultant is t A); 0: on the
+      /// boundary faces (the nodes' shares of the face integral).
+      double traction_layer = 0.;
     };
 
     /**

@@ -145,6 +145,7 @@ namespace pdfem
       bool   inverse_distance = true; ///< omega = 1 / r, else 1
       bool   uniform_volumes  = false;
       double dirichlet_layer  = 1.;
+      double traction_layer   = 0.;
       double delta = 0., A = 0., B = 0., bulk_modulus = 0.;
       /// Per node: the volume its bonds carry, and V_k^pd / V_k.
       std::vector<double> bond_volume, pd_share;

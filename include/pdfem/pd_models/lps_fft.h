@@ -307,6 +307,7 @@ namespace pdfem
       std::string source_file;
       bool        inverse_distance = true;
       double      dirichlet_layer  = 1.;
+      double      traction_layer   = 0.;
       double      delta = 0., A = 0., B = 0., bulk_modulus = 0.;
       double      node_volume = 0.;
       /// LPS fft/Damage = energy, G_0 and W_c = G_0 / delta.
