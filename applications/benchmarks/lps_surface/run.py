@@ -7,6 +7,7 @@ A CASE is comma-separated key=value pairs, e.g.
   shape=square,W=12,L=36,h=1,nu=0.4,mode=free,model=lps_fft
   shape: square | round (W the side or the diameter, mm); centred=1: a round bar on the lattice of
   the dog-bone (bar_mesh.py --cube-centred);  L: gauge length (mm);  h: cube side (mm);
+  T: the Dirichlet layers' thickness (mm, default 3: every layer node is held, z <= 0 and z >= L);
   nu: Poisson's ratio;  mode: free (lateral displacements free, the dog-bone's pins) | faces (the
   lateral faces held in their normal direction: xfaces: x = 0, yfaces: y = 0; a delta-thick layer
   in PD) | all (u_x = u_y = 0 at every node: uniaxial strain);  model: lps_fft | lps | fe.
@@ -42,19 +43,21 @@ def parse(case):
     c.setdefault("mode", "free")
     c.setdefault("model", "lps_fft")
     c.setdefault("centred", "0")
+    c.setdefault("T", "3")
     c.setdefault("L", str(3 * float(c["W"])))
     return c
 
 
 def name_of(c):
-    return "%s%s_W%s_L%s_h%s" % (c["shape"], "c" if c["centred"] == "1" else "", c["W"], c["L"], c["h"])
+    return "%s%s_W%s_L%s_h%s%s" % (c["shape"], "c" if c["centred"] == "1" else "", c["W"], c["L"], c["h"],
+                                   "" if float(c["T"]) == 3 else "_T" + c["T"])
 
 
 def run(c, pdfem, work):
     mesh = os.path.join(work, name_of(c) + ".msh")
     if not os.path.exists(mesh):
         cmd = [sys.executable, os.path.join(HERE, "bar_mesh.py"), "--h", c["h"], "--width", c["W"],
-               "--length", c["L"], mesh]
+               "--length", c["L"], "--layer", c["T"], mesh]
         if c["shape"] == "round":
             cmd.insert(2, "--round")
             if c["centred"] == "1":
@@ -95,7 +98,7 @@ def run(c, pdfem, work):
     n_a = sum(1 for p in nodes if abs(p[2]) < 1e-6)
     # cubes of the cross-section (from the mesh's cell count: the gauge has L/h layers of cubes)
     n_cells = summary["problem"]["cells"]
-    layers_of_cubes = round((L + 6.0) / h)
+    layers_of_cubes = round((L + 2 * float(c["T"])) / h)
     A_c = n_cells / layers_of_cubes * h * h
     A_n = n_a * h * h
     nu = float(c["nu"])
@@ -115,7 +118,7 @@ def run(c, pdfem, work):
     sx = sum(p[0] for p in pm) / len(pm)
     sxx = sum((p[0] - sx) ** 2 for p in pm)
     slope = sum((p[0] - sx) * p[3] for p in pm) / sxx / 1e-3 if sxx > 0 else 0.0
-    row = dict(shape=c["shape"], W=W, L=L, h=h, m=round(m, 3), nu=nu, mode=c["mode"], model=c["model"],
+    row = dict(shape=c["shape"], W=W, L=L, T=float(c["T"]), h=h, m=round(m, 3), nu=nu, mode=c["mode"], model=c["model"],
                nodes=summary["problem"]["nodes"], F=F, A_c=A_c, A_n=A_n, F_ref=F_ref,
                F_over_ref=F / F_ref, eps_mid=eps_mid / eps,
                M_c=F / (A_c * 1e-6 * eps_mid) / ref, M_n=F / (A_n * 1e-6 * eps_mid) / ref,
