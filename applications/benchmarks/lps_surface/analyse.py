@@ -13,7 +13,7 @@ the PD / FE force ratio of the free bar into
                    homogeneous cube-axis Young's modulus (lattice_moduli.py), s_free the surface part
   eps_mid ratio    the strain of the middle third: how the ends share the prescribed displacement
 
-and from the uniaxial-strain bar (all): s_all = M_n / C11 - 1 (the truncated families alone, exact
+(not for a bar with a hole: its middle third crosses the hole) and from the uniaxial-strain bar (all): s_all = M_n / C11 - 1 (the truncated families alone, exact
 in section_energy.py) and the end compliance Delta = L (1 / eps_mid - 1) / 2 per end (mm; FE: 0).
 k = s (A_n / (P_n delta)) is the surface part per unit of perimeter x horizon (P_n, A_n of the
 nodes' section: W + h wide, or a disc of area A_n).
@@ -50,13 +50,14 @@ def main(argv):
     rows = list(csv.DictReader(open(argv[0])))
     runs = {}
     for r in rows:
-        key = (r["shape"], float(r["W"]), float(r["L"]), float(r["h"]), float(r["nu"]), float(r.get("T", 3)))
+        key = (r["shape"], float(r["W"]), float(r["L"]), float(r["h"]), float(r["nu"]), float(r.get("T", 3)),
+               float(r.get("hole", 0) or 0))
         runs.setdefault(key, {})[(r["mode"], r["model"])] = r
     print("| bar | L | T | h | m | nu | F_PD | F_FE | **PD/FE** | A_n/A_c | E_100/E | s_free | "
           "eps_mid PD/FE | s_all | Delta end (mm) | k_free | k_all |")
     print("|" + "---|" * 17)
     for key in sorted(runs, key=lambda k: (k[0], k[4], k[1], -k[3])):
-        shape, W, L, h, nu, T = key
+        shape, W, L, h, nu, T, hole = key
         g = runs[key]
         if ("free", "lps_fft") not in g or ("free", "fe") not in g:
             continue
@@ -71,11 +72,14 @@ def main(argv):
         geo = A_n / (per * DELTA)
         s_free = float(p["M_n"]) / E100 - 1
         end = float(p["eps_mid"]) / float(f["eps_mid"])
-        cells = ["%s %g" % (shape, W), "%g" % L, "%g" % T, "%g" % h, "%.3f" % m, "%g" % nu,
+        cells = ["%s %g%s" % (shape, W, " + hole R %g" % hole if hole else ""), "%g" % L, "%g" % T, "%g" % h, "%.3f" % m, "%g" % nu,
                  "%.0f" % float(p["F"]), "%.0f" % float(f["F"]),
                  "**%+.1f %%**" % (100 * (float(p["F"]) / float(f["F"]) - 1)),
                  "%.4f" % (A_n / A_c), "%.4f" % E100, "%+.1f %%" % (100 * s_free), "%.4f" % end]
-        if ("all", "lps_fft") in g:
+        if hole:  # the middle third crosses the hole: only the forces mean something
+            cells[-3:] = ["–", "–", "–"]
+            cells += ["–", "–", "–", "–"]
+        elif ("all", "lps_fft") in g:
             a = g[("all", "lps_fft")]
             s_all = float(a["M_n"]) / C11 - 1
             delta_end = L * (1 / float(a["eps_mid"]) - 1) / 2

@@ -2,7 +2,8 @@
 """bar_mesh.py -- a straight bar as a uniform grid of equal cubes (gmsh .msh 2.2), for the LPS
 surface-effect study (doc/benchmarks/lps_surface.md; issue 18).
 
-Usage: python3 bar_mesh.py [--h H] [--width W] [--length L] [--layer T] [--round [--cube-centred]] OUTPUT.msh
+Usage: python3 bar_mesh.py [--h H] [--width W] [--length L] [--layer T] [--round [--cube-centred]]
+                          [--hole R] OUTPUT.msh
 
 Lengths in mm, written in m. z is the axis. The specimen (the gauge) is 0 <= z <= L; Dirichlet
 layers of thickness T (default 3, one horizon of the dog-bone) are added below z = 0 and above
@@ -12,7 +13,9 @@ does. The cross-section is a square W x W (default), or with --round a disc of d
 L/H and T/H must be whole (W/H even). The nodes are the cubes' vertices. By default a node is on
 the axis; --cube-centred puts a cube's centre there instead (the lattice of dog_bone_mesh.py, whose
 cube centres are at whole multiples of H: the same staircase as the dog-bone's gauge for W = 30),
-and pin_a is then the node (-H/2, -H/2) next to the axis.
+and pin_a is then the node (-H/2, -H/2) next to the axis. --hole R removes the cubes whose centres
+are within R of the line x = 0, z = L/2 (a lateral through-hole along y, as the dog-bone's grips
+have); the pins are then at z = L/4.
 
 Physical groups (the names of dog_bone_mesh.py, plus the lateral sets):
   volumes  "specimen" (11), "layers" (12); surfaces "bottom" (1), "top" (2) (the body's lowest and
@@ -27,14 +30,16 @@ import sys
 
 
 def main(argv):
-    h, width, length, layer, round_bar, centred = 1.0, 12.0, 36.0, 3.0, False, False
+    h, width, length, layer, round_bar, centred, hole = 1.0, 12.0, 36.0, 3.0, False, False, 0.0
     args = []
     i = 0
     while i < len(argv):
         a = argv[i]
-        if a in ("--h", "--width", "--length", "--layer"):
+        if a in ("--h", "--width", "--length", "--layer", "--hole"):
             v = float(argv[i + 1])
-            if a == "--h":
+            if a == "--hole":
+                hole = v
+            elif a == "--h":
                 h = v
             elif a == "--width":
                 width = v
@@ -92,6 +97,8 @@ def main(argv):
             for i in range(n):
                 if not kept(i, j):
                     continue
+                if hole > 0 and (x_of(i) + 0.5 * h) ** 2 + ((k + 0.5) * h - 0.5 * length) ** 2 <= hole * hole:
+                    continue
                 c = [(i, j, k), (i + 1, j, k), (i + 1, j + 1, k), (i, j + 1, k),
                      (i, j, k + 1), (i + 1, j, k + 1), (i + 1, j + 1, k + 1), (i, j + 1, k + 1)]
                 for p in c:
@@ -114,8 +121,9 @@ def main(argv):
                 faces.append((9, [c[0], c[1], c[5], c[4]]))
             if j0 == n - 1:
                 faces.append((9, [c[3], c[7], c[6], c[2]]))
-    pin_a = (n // 2, n // 2, nl // 2)  # (0, 0) or, --cube-centred, (-h/2, -h/2)
-    pin_b = (n // 2 + max(1, int(round(0.25 * width / h))), n // 2, nl // 2)
+    k_pin = nl // 4 if hole > 0 else nl // 2
+    pin_a = (n // 2, n // 2, k_pin)  # (0, 0) or, --cube-centred, (-h/2, -h/2)
+    pin_b = (n // 2 + max(1, int(round(0.25 * width / h))), n // 2, k_pin)
     points = [(3, pin_a), (4, pin_b)]
     for p in (pin_a, pin_b):
         if p not in node_id:

@@ -7,6 +7,7 @@ A CASE is comma-separated key=value pairs, e.g.
   shape=square,W=12,L=36,h=1,nu=0.4,mode=free,model=lps_fft
   shape: square | round (W the side or the diameter, mm); centred=1: a round bar on the lattice of
   the dog-bone (bar_mesh.py --cube-centred);  L: gauge length (mm);  h: cube side (mm);
+  hole: the radius of a lateral through-hole at mid-length (mm, bar_mesh.py --hole; default none);
   T: the Dirichlet layers' thickness (mm, default 3: every layer node is held, z <= 0 and z >= L);
   nu: Poisson's ratio;  mode: free (lateral displacements free, the dog-bone's pins) | faces (the
   lateral faces held in their normal direction: xfaces: x = 0, yfaces: y = 0; a delta-thick layer
@@ -22,6 +23,7 @@ summary.json exists is not repeated. Prints and (--csv) writes one row per case:
   M_c, M_n   F / (A eps_mid) / (E or lambda + 2 mu): the section's modulus over the continuum's,
              with A_c or A_n
   nu_mid     -(slope of u_x over x on the mid-plane) / eps_mid (free mode)
+  iterations the CG iterations (history.csv), seconds pdfem's total time (summary.json)
 """
 import csv
 import json
@@ -44,20 +46,29 @@ def parse(case):
     c.setdefault("model", "lps_fft")
     c.setdefault("centred", "0")
     c.setdefault("T", "3")
+    c.setdefault("hole", "0")
     c.setdefault("L", str(3 * float(c["W"])))
     return c
 
 
 def name_of(c):
     return "%s%s_W%s_L%s_h%s%s" % (c["shape"], "c" if c["centred"] == "1" else "", c["W"], c["L"], c["h"],
-                                   "" if float(c["T"]) == 3 else "_T" + c["T"])
+                                   ("" if float(c["T"]) == 3 else "_T" + c["T"]) +
+                                   ("" if float(c["hole"]) == 0 else "_hole" + c["hole"]))
+
+
+def linear_iterations(out):
+    """The linear (CG) iterations of the last step, from history.csv."""
+    with open(os.path.join(out, "history.csv")) as f:
+        rows = list(csv.DictReader(f))
+    return rows[-1].get("linear_iterations", "") if rows else ""
 
 
 def run(c, pdfem, work):
     mesh = os.path.join(work, name_of(c) + ".msh")
     if not os.path.exists(mesh):
         cmd = [sys.executable, os.path.join(HERE, "bar_mesh.py"), "--h", c["h"], "--width", c["W"],
-               "--length", c["L"], "--layer", c["T"], mesh]
+               "--length", c["L"], "--layer", c["T"], "--hole", c["hole"], mesh]
         if c["shape"] == "round":
             cmd.insert(2, "--round")
             if c["centred"] == "1":
@@ -97,9 +108,11 @@ def run(c, pdfem, work):
     h, L, W = float(c["h"]), float(c["L"]), float(c["W"])
     n_a = sum(1 for p in nodes if abs(p[2]) < 1e-6)
     # cubes of the cross-section (from the mesh's cell count: the gauge has L/h layers of cubes)
-    n_cells = summary["problem"]["cells"]
-    layers_of_cubes = round((L + 2 * float(c["T"])) / h)
-    A_c = n_cells / layers_of_cubes * h * h
+    # the cubes of the full cross-section (bar_mesh.py's rule; a hole takes cubes from some layers only)
+    n = round(W / h) + (1 if c["centred"] == "1" else 0)
+    x0 = (-(n // 2) - (0.5 if c["centred"] == "1" else 0.0) + 0.5) * h  # the first cube's centre
+    A_c = h * h * sum(1 for j in range(n) for i in range(n)
+                      if c["shape"] == "square" or math.hypot(x0 + i * h, x0 + j * h) <= 0.5 * W)
     A_n = n_a * h * h
     nu = float(c["nu"])
     M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu))
@@ -118,11 +131,11 @@ def run(c, pdfem, work):
     sx = sum(p[0] for p in pm) / len(pm)
     sxx = sum((p[0] - sx) ** 2 for p in pm)
     slope = sum((p[0] - sx) * p[3] for p in pm) / sxx / 1e-3 if sxx > 0 else 0.0
-    row = dict(shape=c["shape"], W=W, L=L, T=float(c["T"]), h=h, m=round(m, 3), nu=nu, mode=c["mode"], model=c["model"],
+    row = dict(shape=c["shape"], W=W, L=L, T=float(c["T"]), hole=float(c["hole"]), h=h, m=round(m, 3), nu=nu, mode=c["mode"], model=c["model"],
                nodes=summary["problem"]["nodes"], F=F, A_c=A_c, A_n=A_n, F_ref=F_ref,
                F_over_ref=F / F_ref, eps_mid=eps_mid / eps,
                M_c=F / (A_c * 1e-6 * eps_mid) / ref, M_n=F / (A_n * 1e-6 * eps_mid) / ref,
-               nu_mid=-slope / eps_mid, iterations=summary.get("linear_solver", {}).get("iterations", ""),
+               nu_mid=-slope / eps_mid, iterations=linear_iterations(out),
                seconds=summary["timings"]["total"])
     return row
 

@@ -1,5 +1,5 @@
 #!/bin/sh
-# run_all.sh -- every run of doc/benchmarks/lps_surface.md (about 10 min of pdfem on 2 cores; a
+# run_all.sh -- every run of doc/benchmarks/lps_surface.md (about 12 min of pdfem on 2 cores; a
 # run whose output exists in WORK is read, not repeated). Writes results.csv here and prints the
 # decomposition table (analyse.py).
 # Usage: sh run_all.sh [WORK (default /tmp/lps_surface)]
@@ -21,6 +21,9 @@ for h in 1 0.75 0.6; do
   B=shape=round,centred=1,W=30,L=60,h=$h
   C="$C $B,mode=free,model=lps_fft $B,mode=all,model=lps_fft $B,mode=free,model=fe"
 done
+# the dog-bone's grip section (diameter 60 mm), without and with its lateral through-hole (R = 5 mm)
+B=shape=round,centred=1,W=60,L=60,h=1
+C="$C $B,mode=free,model=lps_fft $B,mode=free,model=fe $B,hole=5,mode=free,model=lps_fft $B,hole=5,mode=free,model=fe"
 # nu = 0.25 (A = 3 kappa - 5 mu = 0: no dilatation term)
 for W in 12 24; do for h in 1 0.75; do
   C="$C W=$W,h=$h,nu=0.25,mode=free,model=lps_fft W=$W,h=$h,nu=0.25,mode=all,model=lps_fft W=$W,h=$h,nu=0.25,mode=free,model=fe"
