@@ -178,6 +178,13 @@ namespace pdfem
     }
 
     template <int dim>
+    double
+    CoupledSystem<dim>::released_energy() const
+    {
+      return impl->layout.history ? impl->model->released_energy() : 0.;
+    }
+
+    template <int dim>
     PDModels::DegradationState
     CoupledSystem<dim>::degradation_state(const Vector &u,
                                           const double  onset_fraction)
@@ -407,6 +414,7 @@ namespace pdfem
   template unsigned long CoupledSystem<dim>::Impl::break_bonds_where(            \
     const std::function<bool(std::size_t, std::size_t)> &);                      \
   template unsigned long CoupledSystem<dim>::accept_state(const Vector &);       \
+  template double        CoupledSystem<dim>::released_energy() const;            \
   template PDModels::DegradationState CoupledSystem<dim>::degradation_state(     \
     const Vector &, double);                                                     \
   template const std::vector<double>      &CoupledSystem<dim>::horizons() const; \

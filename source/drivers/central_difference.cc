@@ -214,7 +214,20 @@ namespace pdfem
             {
               start              = clock::now();
               record.bonds_broke = after_step(U, t);
-              if (record.bonds_broke)
+              if (!record.bonds_broke)
+                {
+                  // A model whose forces changed at fixed u without broken
+                  // bonds (lps fft's failed nodes, one step late as in the
+                  // paper): the strain energy it released is dissipated.
+                  const double released = system.released_energy();
+                  if (released != 0.)
+                    {
+                      energy.released(released);
+                      if (uniform)
+                        conserved.released(released);
+                    }
+                }
+              else
                 {
                   // Forces at the same u with the new bonds: the released
                   // strain energy is dissipated; a^n+1 and the second half

@@ -172,6 +172,15 @@ namespace pdfem
       }
 
       void
+      EnergyAccount::released(const double energy)
+      {
+        dissipated += energy;
+        strain -= energy;
+        if (!errors.empty())
+          errors.back() = error();
+      }
+
+      void
       EnergyAccount::bonds_broke(const Vector &u, const Vector &f_int)
       {
         const double after = 0.5 * (u * f_int);
@@ -348,6 +357,14 @@ namespace pdfem
         dissipated += strain_part - after;
         g += after - strain_part;
         strain_part = after;
+      }
+
+      void
+      LeapfrogEnergy::released(const double energy)
+      {
+        dissipated += energy;
+        g -= energy;
+        strain_part -= energy;
       }
 
       double

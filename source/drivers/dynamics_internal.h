@@ -61,6 +61,12 @@ namespace pdfem
         void
         bonds_broke(const Vector &u, const Vector &f_int);
 
+        /// The model released @p energy of strain energy at fixed u without
+        /// breaking bonds (its forces change from the next step on): it is
+        /// booked as dissipated.
+        void
+        released(double energy);
+
         /// Fill the energy fields of @p r.
         void
         record(DynamicRecord &r) const;
@@ -153,6 +159,13 @@ namespace pdfem
         bonds_broke(const Vector            &f_int,
                     const Vector            &f_ext,
                     const std::vector<char> &held);
+
+        /// The model released @p energy at u^s without breaking bonds: it
+        /// leaves the strain part and is booked as dissipated (to first
+        /// order: the strain part is u^(s-1) . f(u^s) / 2, and the released
+        /// energy is taken at u^s).
+        void
+        released(double energy);
 
         /// Relative drift of the conserved energy (0 before step 2).
         double

@@ -441,6 +441,7 @@ namespace pdfem
     LpsFft<dim>::commit_state(const NodalField<dim> &u)
     {
       n_last_failed = 0;
+      released      = 0.;
       if (!damage_on)
         return;
       // specs/002 eqs. 43, 63: lambda = 0 where W > W_c, irreversible; the
@@ -452,7 +453,22 @@ namespace pdfem
                             this->region.comm);
       if (n_last_failed > 0)
         {
+          // The strain energy sum chi_B W / 2 Delta V (W the paper's, twice
+          // the physical density) at u with the old masks and the new ones:
+          // what the failed nodes released (one more evaluation of W on
+          // the steps where nodes fail).
+          const auto energy = [&](const std::vector<double> &W) {
+            double E = 0.;
+            for (std::size_t k = 0; k < body.size(); ++k)
+              E += body[k] * W[k];
+            return 0.5 * node_volume * E;
+          };
+          const double before = energy(W_box);
           op->set_masks(body, lambda);
+          std::vector<double> W_after;
+          op->energy_density(u_box, W_after);
+          released =
+            Utilities::MPI::sum(before - energy(W_after), this->region.comm);
           op->damage(d_box, normalisation);
           exchange->pull(d_box, 1, d_owner.data());
           count_failed_nodes();

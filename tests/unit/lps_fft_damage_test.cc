@@ -245,6 +245,41 @@ namespace
     EXPECT_EQ(s.model().integrity(), before);
   }
 
+  TEST(LpsFftDamage, FailedNodesReleaseTheirStrainEnergy)
+  {
+    // W_c at the 90th percentile of W of a pseudo-random field: about a
+    // tenth of the nodes fail when the state is accepted. The released
+    // energy is E(u) = 1/2 u . f_int(u) with the old masks minus with the
+    // new ones, at the same u.
+    System intact(damage_on(1e30));
+    intact.set_u(1e-3);
+    intact.system->accept_state(intact.u);
+    EXPECT_EQ(intact.system->released_energy(), 0.);
+    std::vector<double> W;
+    for (std::size_t i = 0; i < intact.model().energy_density().size(); ++i)
+      if (intact.model().body_mask()[i] > 0.)
+        W.push_back(intact.model().energy_density()[i]);
+    std::sort(W.begin(), W.end());
+    const std::size_t p = 9 * W.size() / 10;
+    System            s(damage_on(0.5 * (W[p] + W[p + 1]) * 3.015 * 0.05));
+    s.set_u(1e-3);
+    Vector f;
+    s.system->initialize_vector(f);
+    s.system->internal_force(s.u, f);
+    const double before = 0.5 * (s.u * f);
+    s.system->accept_state(s.u);
+    ASSERT_GT(s.model().last_failed(), 0u);
+    s.system->internal_force(s.u, f);
+    const double after = 0.5 * (s.u * f);
+    EXPECT_GT(before - after, 0.);
+    EXPECT_NEAR(s.system->released_energy(), before - after, 1e-10 * before);
+    // Unloaded, nothing fails: nothing is released.
+    s.set_u(0.);
+    s.system->accept_state(s.u);
+    EXPECT_EQ(s.model().last_failed(), 0u);
+    EXPECT_EQ(s.system->released_energy(), 0.);
+  }
+
   /// The InputError of @p make(): its parameter, and one line.
   std::string
   error_parameter(const std::function<void()> &make)

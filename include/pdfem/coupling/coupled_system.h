@@ -322,6 +322,10 @@ namespace pdfem
       mass_vmult(Vector &y, const Vector &x) override;
       double
       thickness() const override;
+      /// The PD model's released_energy() of the last accept_state() (0 for
+      /// a model without a history).
+      double
+      released_energy() const override;
       void
       pseudo_random(Vector &x) const override;
       /// Reactions (see reactions()) from the last internal_force() and

@@ -80,6 +80,16 @@ namespace pdfem
       /// reports multiply by it); 1 in 3D.
       virtual double
       thickness() const = 0;
+
+      /// The strain energy the model released at fixed u when it accepted
+      /// the last state without breaking bonds (PDModels::Interface::
+      /// released_energy(); per unit thickness in 2D), to be booked as
+      /// dissipated. By default 0.
+      virtual double
+      released_energy() const
+      {
+        return 0.;
+      }
     };
   } // namespace Drivers
 } // namespace pdfem

@@ -395,6 +395,19 @@ namespace pdfem
         (void)u;
       }
 
+      /**
+       * The strain energy that the last commit_state() released at the
+       * state it was given, without breaking bonds (its forces changed at
+       * fixed u: lps fft's failed nodes), summed over the ranks: E(u)
+       * before minus E(u) after, E = 1/2 u . f_int per unit thickness in 2D.
+       * A time integrator books it as dissipated. By default 0.
+       */
+      virtual double
+      released_energy() const
+      {
+        return 0.;
+      }
+
       /// Does bond @p j (an index into families.members) carry no force
       /// for good, after the last commit_state()?
       virtual bool

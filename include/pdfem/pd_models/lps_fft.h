@@ -181,6 +181,14 @@ namespace pdfem
       void
       commit_state(const NodalField<dim> &u) override;
 
+      /// The strain energy the nodes failed by the last commit_state()
+      /// released at its u (summed over the ranks; 0 if none failed).
+      double
+      released_energy() const override
+      {
+        return released;
+      }
+
       /// Owner @p o's damage index (the masks of the last commit_state()).
       double
       damage(std::size_t o, const NodalField<dim> &u) const override;
@@ -315,6 +323,7 @@ namespace pdfem
       double                   fracture_energy = 0., W_c = 0.;
       FFT::DamageNormalisation normalisation{};
       std::size_t              n_last_failed = 0;
+      double                   released      = 0.;
       /// chi_B, lambda, W and the damage index of the slab's box nodes.
       std::vector<double> body, lambda, W_box, d_box;
 
