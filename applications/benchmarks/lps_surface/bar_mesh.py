@@ -26,7 +26,13 @@ Physical groups (the names of dog_bone_mesh.py, plus the lateral sets):
   "yfaces" (9) (y = +-W/2), over the whole body, layers included.
 """
 import math
+import os
 import sys
+
+# The .msh 2.2 writer of the dog-bone example's mesher.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples",
+                                "lps_dog_bone"))
+from dog_bone_mesh import write_msh22  # noqa: E402
 
 
 def main(argv):
@@ -141,26 +147,8 @@ def main(argv):
              (0, 7, "all")]
     if not round_bar:
         names += [(2, 8, "xfaces"), (2, 9, "yfaces")]
-    with open(args[0], "w") as out:
-        out.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n")
-        out.write("$PhysicalNames\n%d\n" % len(names))
-        for d, t, name in names:
-            out.write('%d %d "%s"\n' % (d, t, name))
-        out.write("$EndPhysicalNames\n$Nodes\n%d\n" % len(node_id))
-        for (i, j, k), nid in sorted(node_id.items(), key=lambda item: item[1]):
-            out.write("%d %.12g %.12g %.12g\n" % (nid, x_of(i) * 1e-3, x_of(j) * 1e-3, k * h * 1e-3))
-        out.write("$EndNodes\n$Elements\n%d\n" % (len(points) + len(faces) + len(cells)))
-        e = 0
-        for tag, p in points:
-            e += 1
-            out.write("%d 15 2 %d %d %d\n" % (e, tag, tag, node_id[p]))
-        for tag, f in faces:
-            e += 1
-            out.write("%d 3 2 %d %d %s\n" % (e, tag, tag, " ".join(str(node_id[c]) for c in f)))
-        for tag, c in cells:
-            e += 1
-            out.write("%d 5 2 %d %d %s\n" % (e, tag, tag, " ".join(str(node_id[p]) for p in c)))
-        out.write("$EndElements\n")
+    write_msh22(args[0], names, node_id, lambda p: (x_of(p[0]), x_of(p[1]), p[2] * h), points,
+                faces, cells)
     n_section = sum(1 for p in node_id if p[2] == 0)
     cubes_section = sum(1 for j in range(n) for i in range(n) if kept(i, j))
     print("%s: %d cubes of %g mm, %d nodes; cross-section: %d cubes (%.6g mm^2), %d nodes "

@@ -54,6 +54,29 @@ def in_layer(x, y, z):
     return (-3.0 <= z < 0.0 or 117.0 < z <= 120.0) and math.hypot(x, y) <= 30.0
 
 
+def write_msh22(path, names, node_id, position_mm, points, faces, cells):
+    """Writes a gmsh .msh 2.2 file: names [(dim, tag, name)], node_id {lattice point: id},
+    position_mm(lattice point) in mm (written in m), and the elements as [(tag, item)] with a lattice
+    point (points), 4 of them (quadrangle faces) or 8 (hexahedra)."""
+    with open(path, "w") as out:
+        out.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n")
+        out.write("$PhysicalNames\n%d\n" % len(names))
+        for d, t, name in names:
+            out.write('%d %d "%s"\n' % (d, t, name))
+        out.write("$EndPhysicalNames\n$Nodes\n%d\n" % len(node_id))
+        for p, nid in sorted(node_id.items(), key=lambda item: item[1]):
+            x, y, z = position_mm(p)
+            out.write("%d %.12g %.12g %.12g\n" % (nid, x * 1e-3, y * 1e-3, z * 1e-3))
+        out.write("$EndNodes\n$Elements\n%d\n" % (len(points) + len(faces) + len(cells)))
+        e = 0
+        for kind, items in ((15, points), (3, faces), (5, cells)):
+            for tag, item in items:
+                e += 1
+                ids = [node_id[item]] if kind == 15 else [node_id[c] for c in item]
+                out.write("%d %d 2 %d %d %s\n" % (e, kind, tag, tag, " ".join(map(str, ids))))
+        out.write("$EndElements\n")
+
+
 def main(argv):
     per_mm = 1
     layers = False
@@ -125,29 +148,11 @@ def main(argv):
             elif p[2] >= whole(117):
                 pins.append((6, p))
 
-    with open(args[0], "w") as out:
-        out.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n")
-        names = [(3, 11, "specimen"), (2, 1, "bottom"), (2, 2, "top"), (0, 3, "pin_a"), (0, 4, "pin_b")]
-        if layers:
-            names += [(3, 12, "layers"), (0, 5, "bottom_layer"), (0, 6, "top_layer")]
-        out.write("$PhysicalNames\n%d\n" % len(names))
-        for d, t, name in names:
-            out.write('%d %d "%s"\n' % (d, t, name))
-        out.write("$EndPhysicalNames\n$Nodes\n%d\n" % len(node_id))
-        for (i, j, k), nid in sorted(node_id.items(), key=lambda item: item[1]):
-            out.write("%d %.12g %.12g %.12g\n" % (nid, x_of(i) * 1e-3, x_of(j) * 1e-3, k * h * 1e-3))
-        out.write("$EndNodes\n$Elements\n%d\n" % (len(pins) + len(faces) + len(cells)))
-        e = 0
-        for tag, p in pins:
-            e += 1
-            out.write("%d 15 2 %d %d %d\n" % (e, tag, tag, node_id[p]))
-        for tag, f in faces:
-            e += 1
-            out.write("%d 3 2 %d %d %s\n" % (e, tag, tag, " ".join(str(node_id[c]) for c in f)))
-        for tag, c in cells:
-            e += 1
-            out.write("%d 5 2 %d %d %s\n" % (e, tag, tag, " ".join(str(node_id[p]) for p in c)))
-        out.write("$EndElements\n")
+    names = [(3, 11, "specimen"), (2, 1, "bottom"), (2, 2, "top"), (0, 3, "pin_a"), (0, 4, "pin_b")]
+    if layers:
+        names += [(3, 12, "layers"), (0, 5, "bottom_layer"), (0, 6, "top_layer")]
+    write_msh22(args[0], names, node_id, lambda p: (x_of(p[0]), x_of(p[1]), p[2] * h), pins, faces,
+                cells)
     print("%s: %d cubes of %.4g mm, %d nodes%s" % (args[0], len(cells), h, len(node_id),
                                                   ", with the Dirichlet layers" if layers else ""))
 
