@@ -53,21 +53,31 @@ namespace pdfem
           return;
         }
       const int n = n_ranks(comm);
-      // The slabs tile the box in rank order: rank r holds the box nodes
-      // below ends[r] and from ends[r - 1] (empty slabs included).
-      std::vector<std::uint64_t> ends(n);
-      const std::uint64_t        end = slab.end;
-      MPI_Allgather(&end, 1, MPI_UINT64_T, ends.data(), 1, MPI_UINT64_T, comm);
+      // The slabs tile the box: the nonempty ones in rank order, each a
+      // range [begin, end) of box nodes (an empty slab may report any
+      // position, so it is left out of the search).
+      const std::uint64_t        range[2] = {slab.begin, slab.end};
+      std::vector<std::uint64_t> all(2 * n);
+      MPI_Allgather(range, 2, MPI_UINT64_T, all.data(), 2, MPI_UINT64_T, comm);
+      std::vector<std::uint64_t> starts; // of the nonempty slabs
+      std::vector<int>           owner;  // their ranks
+      for (int r = 0; r < n; ++r)
+        if (all[2 * r + 1] > all[2 * r])
+          {
+            starts.push_back(all[2 * r]);
+            owner.push_back(r);
+          }
       std::vector<int> rank_of(points.size());
       send_count.assign(n, 0);
       for (std::size_t p = 0; p < points.size(); ++p)
         {
-          const auto r = std::upper_bound(ends.begin(), ends.end(), points[p]) -
-                         ends.begin();
-          if (r >= n)
+          const auto i =
+            std::upper_bound(starts.begin(), starts.end(), points[p]) -
+            starts.begin() - 1;
+          if (i < 0 || points[p] >= all[2 * owner[i] + 1])
             throw std::logic_error("SlabExchange: a point off the box");
-          rank_of[p] = int(r);
-          ++send_count[r];
+          rank_of[p] = owner[i];
+          ++send_count[owner[i]];
         }
       send_offset = offsets_of(send_count);
       send_order.resize(points.size());

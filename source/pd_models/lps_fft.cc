@@ -23,6 +23,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "pairwise_tools.h"
 
@@ -366,6 +367,7 @@ namespace pdfem
       exchange->pull(d_box, 1, d_owner.data());
       u_box.assign(dim * N, 0.);
       r_box.clear(); // push() zeroes it at its first use
+      inverse_made = false;
       W_box.clear();
       // The paper's calibration (specs/002 eqs. 50-51): a delta-thick layer
       // of dead nodes releases A delta W_c = A G_0.
@@ -424,15 +426,18 @@ namespace pdfem
                               std::vector<double>       &z)
     {
       // The stiffness of the owners' rows is Delta V (-dL/du): its periodic
-      // inverse is G^-1 / Delta V.
-      const bool first = z_box.empty();
+      // inverse is G^-1 / Delta V. The symbol is made at the first call:
+      // its bytes are counted then (collective: a flag, not the slab's
+      // size, which is 0 on a rank without planes).
+      const bool first = !inverse_made;
+      inverse_made     = true;
       exchange->push(r.data(), dim, r_box);
       op->apply_periodic_inverse(r_box, z_box);
       z.resize(dim * box_node.size());
       exchange->pull(z_box, dim, z.data());
       for (double &value : z)
         value /= node_volume;
-      if (first) // the periodic inverse's symbol is made at the first call
+      if (first)
         count_operator_bytes();
     }
 
@@ -651,6 +656,9 @@ namespace pdfem
     LpsFft<dim>::displacement_gradient(const std::size_t o,
                                        const NodalField<dim> &) const
     {
+      if (o >= gradient.size())
+        throw std::logic_error("lps fft: displacement_gradient() before "
+                               "prepare_results()");
       return gradient[o];
     }
 

@@ -380,3 +380,41 @@ TEST(FftMpi, SlabExchangeMovesValuesBothWays)
         }
     }
 }
+
+TEST(FftMpi, SlabExchangeSkipsEmptySlabsWhereverTheyReport)
+{
+  // Slabs made by hand: one rank (the second of 3 or more, the last of 2)
+  // holds nothing and reports the range [0, 0) (FFTW leaves local_0_start
+  // undefined where local_n0 = 0), so that the reported ends are not in
+  // order; the others split 6 planes of 4 nodes. Every box node is a point
+  // of the rank node % ranks.
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  const int  n       = n_ranks();
+  const int  empty   = n == 1 ? -1 : 1;
+  const int  holders = n == 1 ? 1 : n - 1;
+  const int  index   = rank < empty || empty < 0 ? rank : rank - 1;
+  Slab       slab;
+  const auto plane_of = [&](const int r) { return 6 * r / holders; };
+  if (rank != empty)
+    {
+      slab.first_plane = plane_of(index);
+      slab.n_planes    = plane_of(index + 1) - plane_of(index);
+      slab.begin       = 4 * slab.first_plane;
+      slab.end         = slab.begin + 4 * slab.n_planes;
+    }
+  std::vector<std::size_t> points;
+  for (std::size_t k = 0; k < 24; ++k)
+    if (int(k % n) == rank)
+      points.push_back(k);
+  const SlabExchange  exchange(points, slab, MPI_COMM_WORLD);
+  std::vector<double> values(points.begin(), points.end()), field;
+  exchange.push(values.data(), 1, field);
+  double error = 0.;
+  for (std::size_t k = 0; k < slab.n_nodes(); ++k)
+    error = std::max(error, std::abs(field[k] - double(slab.begin + k)));
+  EXPECT_EQ(max_over_ranks(error), 0.);
+  std::vector<double> back(points.size(), -1.);
+  exchange.pull(field, 1, back.data());
+  EXPECT_EQ(back, values);
+}

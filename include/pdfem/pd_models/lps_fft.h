@@ -324,6 +324,8 @@ namespace pdfem
       FFT::DamageNormalisation normalisation{};
       std::size_t              n_last_failed = 0;
       double                   released      = 0.;
+      /// precondition() has made the periodic inverse.
+      bool inverse_made = false;
       /// chi_B, lambda, W and the damage index of the slab's box nodes.
       std::vector<double> body, lambda, W_box, d_box;
 
