@@ -28,23 +28,40 @@ namespace pdfem
       // s_k = int_{S_pd} N_k n dS over the faces of PD cells that lie on the
       // domain boundary or on the PD/FE interface (outward from the PD cell).
       boundary_area.assign(n_nodes, Tensor<1, dim>());
+      add_face_area_vectors(
+        [&](const typename DoFHandler<dim>::active_cell_iterator &cell,
+            const unsigned int                                    f) {
+          const bool on_pd_boundary =
+            cell->at_boundary(f) ||
+            !cell_pd[cell->neighbor(f)->active_cell_index()];
+          n_pd_boundary_faces += on_pd_boundary; // counted as they are taken
+          return on_pd_boundary;
+        },
+        boundary_area);
+    }
+
+    template <int dim>
+    double
+    CoupledSystem<dim>::Impl::add_face_area_vectors(
+      const std::function<
+        bool(const typename DoFHandler<dim>::active_cell_iterator &,
+             unsigned int)>       &selected,
+      std::vector<Tensor<1, dim>> &area) const
+    {
       hp::FEFaceValues<dim> face_values(mapping,
                                         fe_scalar,
                                         face_quadrature,
                                         update_values | update_normal_vectors |
                                           update_JxW_values);
+      double                total = 0.;
       for (const auto &cell : node_dofs_handler.active_cell_iterators())
         {
           if (!cell_pd[cell->active_cell_index()])
             continue;
           for (const unsigned int f : cell->face_indices())
             {
-              const bool on_pd_boundary =
-                cell->at_boundary(f) ||
-                !cell_pd[cell->neighbor(f)->active_cell_index()];
-              if (!on_pd_boundary)
+              if (!selected(cell, f))
                 continue;
-              ++n_pd_boundary_faces;
               face_values.reinit(cell, f);
               const FEFaceValues<dim> &fv = face_values.get_present_fe_values();
               for (const unsigned int v : cell->vertex_indices())
@@ -52,10 +69,13 @@ namespace pdfem
                   Tensor<1, dim> s;
                   for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
                     s += fv.shape_value(v, q) * fv.normal_vector(q) * fv.JxW(q);
-                  boundary_area[vertex_to_node[cell->vertex_index(v)]] += s;
+                  area[vertex_to_node[cell->vertex_index(v)]] += s;
                 }
+              for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
+                total += fv.JxW(q);
             }
         }
+      return total;
     }
 
     template <int dim>
@@ -306,11 +326,16 @@ namespace pdfem
                         [](const std::uint8_t i) { return i != 0; }));
     }
 
-#define INSTANTIATE(dim)                                       \
-  template void CoupledSystem<dim>::Impl::make_pd_boundary();  \
-  template void CoupledSystem<dim>::Impl::make_families();     \
-  template void CoupledSystem<dim>::Impl::add_crack_face_area( \
-    const std::vector<Mesh::Crack<dim>> &);                    \
+#define INSTANTIATE(dim)                                                     \
+  template void   CoupledSystem<dim>::Impl::make_pd_boundary();              \
+  template double CoupledSystem<dim>::Impl::add_face_area_vectors(           \
+    const std::function<bool(                                                \
+      const typename DoFHandler<dim>::active_cell_iterator &, unsigned int)> \
+      &,                                                                     \
+    std::vector<Tensor<1, dim>> &) const;                                    \
+  template void CoupledSystem<dim>::Impl::make_families();                   \
+  template void CoupledSystem<dim>::Impl::add_crack_face_area(               \
+    const std::vector<Mesh::Crack<dim>> &);                                  \
   template void CoupledSystem<dim>::Impl::update_decoupled();
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

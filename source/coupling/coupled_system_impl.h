@@ -68,6 +68,15 @@ namespace pdfem
       make_nodes();
       void
       make_pd_boundary();
+      /// Adds to @p area[k] the area vector int N_k n dS of node k over the
+      /// faces (cell, f) of PD cells for which @p selected is true (outward
+      /// from the cell) and returns their total area.
+      double
+      add_face_area_vectors(
+        const std::function<
+          bool(const typename dealii::DoFHandler<dim>::active_cell_iterator &,
+               unsigned int)>               &selected,
+        std::vector<dealii::Tensor<1, dim>> &area) const;
       void
       make_families();
       void

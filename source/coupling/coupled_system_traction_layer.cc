@@ -8,8 +8,6 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <deal.II/hp/fe_values.h>
-
 #include <algorithm>
 #include <limits>
 
@@ -36,52 +34,28 @@ namespace pdfem
         layout.traction_layer * settings.horizon_factor * spacing;
       if (!(layer > 0.) || !has_pd_cells())
         return;
-      hp::FEFaceValues<dim> face_values(mapping,
-                                        fe_scalar,
-                                        face_quadrature,
-                                        update_values | update_normal_vectors |
-                                          update_JxW_values);
       traction_layers.resize(settings.traction.size());
       for (std::size_t c = 0; c < settings.traction.size(); ++c)
         {
           const auto                 &bc = settings.traction[c];
           TractionLayer              &l  = traction_layers[c];
-          std::vector<unsigned int>   boundary;
+          std::vector<unsigned int>   boundary; // the faces' vertices
           std::vector<Tensor<1, dim>> area(n_nodes);
-          double                      A = 0.;
-          for (const auto &cell : node_dofs_handler.active_cell_iterators())
-            {
-              if (!cell_pd[cell->active_cell_index()] || !cell->at_boundary())
-                continue;
-              for (const unsigned int f : cell->face_indices())
-                {
-                  if (!cell->at_boundary(f) ||
-                      std::find(bc.boundary_ids.begin(),
-                                bc.boundary_ids.end(),
-                                cell->face(f)->boundary_id()) ==
-                        bc.boundary_ids.end())
-                    continue;
-                  face_values.reinit(cell, f);
-                  const FEFaceValues<dim> &fv =
-                    face_values.get_present_fe_values();
-                  for (const unsigned int v : cell->vertex_indices())
-                    {
-                      Tensor<1, dim> s;
-                      for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
-                        s += fv.shape_value(v, q) * fv.normal_vector(q) *
-                             fv.JxW(q);
-                      if (s.norm() > 0.)
-                        {
-                          const unsigned int k =
-                            vertex_to_node[cell->vertex_index(v)];
-                          area[k] += s;
-                          boundary.push_back(k);
-                        }
-                    }
-                  for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
-                    A += fv.JxW(q);
-                }
-            }
+          const double                A = add_face_area_vectors(
+            [&](const typename DoFHandler<dim>::active_cell_iterator &cell,
+                const unsigned int                                    f) {
+              const bool selected = cell->at_boundary(f) &&
+                                    std::find(bc.boundary_ids.begin(),
+                                              bc.boundary_ids.end(),
+                                              cell->face(f)->boundary_id()) !=
+                                      bc.boundary_ids.end();
+              if (selected)
+                for (const unsigned int v : cell->face(f)->vertex_indices())
+                  boundary.push_back(
+                    vertex_to_node[cell->face(f)->vertex_index(v)]);
+              return selected;
+            },
+            area);
           if (boundary.empty())
             continue; // the condition's faces are all on FE cells
           l.active = true;
