@@ -26,12 +26,15 @@
 #include <string>
 #include <vector>
 
+#include "fft_test_tools.h"
 #include <gtest/gtest.h>
 #include <mpi.h>
 
 namespace
 {
   using namespace pdfem::FFT;
+  using test_tools::material;
+  using test_tools::random_field;
 
   int
   n_ranks()
@@ -46,17 +49,6 @@ namespace
   {
     MPI_Allreduce(MPI_IN_PLACE, &x, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
     return x;
-  }
-
-  std::vector<double>
-  random_field(const std::size_t n, const double amplitude, unsigned int seed)
-  {
-    std::mt19937                           generator(seed);
-    std::uniform_real_distribution<double> value(-amplitude, amplitude);
-    std::vector<double>                    f(n);
-    for (auto &v : f)
-      v = value(generator);
-    return f;
   }
 
   /// The slab's part of a field of @p components blocks of N values.
@@ -102,25 +94,10 @@ namespace
         std::vector<double> &body,
         std::vector<double> &integrity)
   {
-    const std::size_t N = g.n_nodes();
-    body.assign(N, 0.);
-    integrity.assign(N, 1.);
-    std::mt19937                           generator(11);
-    std::uniform_real_distribution<double> value(0., 1.);
-    for (std::size_t k = 0; k < N; ++k)
-      {
-        const auto x = g.position(k);
-        double     r = 0.;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const double L = g.n[d] * g.spacing[d], c = (L - g.spacing[d]) / 2;
-            const double a = c - 0.9 * g.spacing[d];
-            r += (x[d] - c) * (x[d] - c) / (a * a);
-          }
-        body[k] = r <= 1. ? 1. : 0.;
-        if (value(generator) < 0.15)
-          integrity[k] = 0.;
-      }
+    std::array<double, dim> inset;
+    for (unsigned int d = 0; d < dim; ++d)
+      inset[d] = 0.9 * g.spacing[d];
+    test_tools::ellipsoid_masks<dim>(g, inset, false, 11, body, integrity);
   }
 
   template <int dim>
@@ -132,18 +109,6 @@ namespace
     g.n       = n;
     g.spacing = spacing;
     return g;
-  }
-
-  Material
-  material(const Model model, const double horizon)
-  {
-    Material m;
-    m.model         = model;
-    m.horizon       = horizon;
-    m.micromodulus  = 2.;
-    m.bulk_modulus  = 3.;
-    m.shear_modulus = 1.25;
-    return m;
   }
 
   /// Every operation of the distributed operator against the one-rank

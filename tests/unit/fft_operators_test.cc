@@ -22,11 +22,13 @@
 #include <cmath>
 #include <random>
 
+#include "fft_test_tools.h"
 #include <gtest/gtest.h>
 
 namespace
 {
   using namespace pdfem::FFT;
+  using test_tools::random_field;
 
   /// max |a - b| / max |b|
   double
@@ -53,17 +55,6 @@ namespace
     return s;
   }
 
-  std::vector<double>
-  random_field(const std::size_t n, const double amplitude, unsigned int seed)
-  {
-    std::mt19937                           generator(seed);
-    std::uniform_real_distribution<double> value(-amplitude, amplitude);
-    std::vector<double>                    f(n);
-    for (auto &v : f)
-      v = value(generator);
-    return f;
-  }
-
   /// 2D: 24 x 20 nodes, spacing 1 x 0.8; 3D: 12 x 10 x 14, 1 x 0.9 x 0.8.
   template <int dim>
   Grid<dim>
@@ -87,13 +78,7 @@ namespace
   Material
   material(const Model model)
   {
-    Material m;
-    m.model         = model;
-    m.horizon       = dim == 2 ? 3.05 : 2.55;
-    m.micromodulus  = 2.;
-    m.bulk_modulus  = 3.;
-    m.shear_modulus = 1.25;
-    return m;
+    return test_tools::material(model, dim == 2 ? 3.05 : 2.55);
   }
 
   /// An ellipsoidal body with a gap of at least a horizon to the box faces
@@ -105,26 +90,9 @@ namespace
         std::vector<double> &body,
         std::vector<double> &integrity)
   {
-    const std::size_t N = g.n_nodes();
-    body.assign(N, 0.);
-    std::mt19937                           generator(7);
-    std::uniform_real_distribution<double> value(0., 1.);
-    integrity.assign(N, 1.);
-    for (std::size_t k = 0; k < N; ++k)
-      {
-        const auto x = g.position(k);
-        double     r = 0., hole = 0.;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const double L = g.n[d] * g.spacing[d], c = (L - g.spacing[d]) / 2;
-            const double a = c - gap;
-            r += (x[d] - c) * (x[d] - c) / (a * a);
-            hole += (x[d] - c - 0.2 * a) * (x[d] - c - 0.2 * a);
-          }
-        body[k] = r <= 1. && hole > 1.1 ? 1. : 0.;
-        if (value(generator) < 0.15)
-          integrity[k] = 0.;
-      }
+    std::array<double, dim> inset;
+    inset.fill(gap);
+    test_tools::ellipsoid_masks<dim>(g, inset, true, 7, body, integrity);
   }
 
   enum class Masks

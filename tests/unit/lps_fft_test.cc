@@ -228,12 +228,12 @@ namespace
     parallel::shared::Triangulation<2> tria(MPI_COMM_WORLD);
     GridGenerator::subdivided_hyper_rectangle(
       tria, {20, 10}, Point<2>(), Point<2>(2., 1.), true);
-    Coupling::Settings<2> settings = body_settings<2>(
-      0.3,
-      3.015,
-      make_model<2>(name,
-                    {{"LPS/Nodal volumes", "uniform"},
-                     {"LPS/Traction layer", layer}}));
+    Coupling::Settings<2> settings =
+      body_settings<2>(0.3,
+                       3.015,
+                       make_model<2>(name,
+                                     {{"LPS/Nodal volumes", "uniform"},
+                                      {"LPS/Traction layer", layer}}));
     settings.source_file = "test.prm";
     Coupling::BoundaryCondition<2> right, left;
     right.name         = "right";
@@ -245,10 +245,8 @@ namespace
     left.component     = 0;
     left.expression    = "-5";
     settings.traction  = {right, left};
-    Coupling::CoupledSystem<2> system(tria,
-                                      std::vector<bool>(tria.n_active_cells(),
-                                                        true),
-                                      settings);
+    Coupling::CoupledSystem<2> system(
+      tria, std::vector<bool>(tria.n_active_cells(), true), settings);
     Vector f;
     system.external_force(0., f);
     std::vector<Tensor<1, 2>> forces(system.size().n_nodes);
