@@ -226,6 +226,12 @@ namespace pdfem
       json.value("factorizations",
                  static_cast<unsigned long>(s.solver.n_factorizations()));
       json.value("analyses", static_cast<unsigned long>(s.solver.n_analyses()));
+      json.value("reused_factorization_solves",
+                 static_cast<unsigned long>(
+                   s.solver.n_reused_factorization_solves()));
+      json.value("reused_factorization_iterations",
+                 static_cast<unsigned long>(
+                   s.solver.n_reused_factorization_iterations()));
       if (s.choice)
         s.choice->write(json);
       else if (ls.automatic)

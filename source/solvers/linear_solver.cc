@@ -18,6 +18,7 @@
 
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
+#include <Amesos_Mumps.h>
 #include <Epetra_LinearProblem.h>
 #include <Epetra_MultiVector.h>
 
@@ -88,7 +89,23 @@ namespace pdfem
       const TrilinosWrappers::SparseMatrix *matrix = nullptr;
       Epetra_LinearProblem                  problem;
       std::unique_ptr<Amesos_BaseSolver>    solver;
-      bool                                  factorized = false;
+      /// The factors are those of the matrix's present values.
+      bool factorized = false;
+      /// Factors of earlier values of the same pattern exist.
+      bool has_factors = false;
+      /// How many solves with the factors cost one numeric factorisation
+      /// (MUMPS's own counts: its factorisation's flops over two per
+      /// factor entry; 0 unknown, as with KLU).
+      double solves_per_factorization = 0.;
+
+      /// x = the factors' solution for b.
+      int
+      solve(Epetra_MultiVector &x, const Epetra_MultiVector &b)
+      {
+        problem.SetLHS(&x);
+        problem.SetRHS(const_cast<Epetra_MultiVector *>(&b));
+        return solver->Solve();
+      }
     };
 
     LinearSolver::LinearSolver(const Solvers::Settings &settings)
@@ -142,17 +159,35 @@ namespace pdfem
                 fail("the symbolic analysis", ierr);
               ++analyses;
             }
+          if (!direct->factorized && direct->has_factors &&
+              settings.reuse_factorization)
+            {
+              const unsigned int its = solve_with_earlier_factors(K, x, b);
+              if (its > 0)
+                return its;
+            }
           if (!direct->factorized)
             {
               if (const int ierr = direct->solver->NumericFactorization())
                 fail("the numeric factorisation", ierr);
-              direct->factorized = true;
+              direct->factorized  = true;
+              direct->has_factors = true;
               ++factorizations;
+              direct->solves_per_factorization = 0.;
+              if (const auto *mumps =
+                    dynamic_cast<Amesos_Mumps *>(direct->solver.get()))
+                {
+                  // RINFOG(3): the factorisation's flops; INFOG(29): the
+                  // factors' entries (both summed over the ranks).
+                  auto        *m       = const_cast<Amesos_Mumps *>(mumps);
+                  const double flops   = m->GetRINFOG()[2];
+                  const double entries = m->GetINFOG()[28];
+                  if (flops > 0. && entries > 0.)
+                    direct->solves_per_factorization = flops / (2. * entries);
+                }
             }
-          direct->problem.SetLHS(&x.trilinos_vector());
-          direct->problem.SetRHS(
-            const_cast<Epetra_MultiVector *>(&b.trilinos_vector()));
-          if (const int ierr = direct->solver->Solve())
+          if (const int ierr =
+                direct->solve(x.trilinos_vector(), b.trilinos_vector()))
             fail("the solve", ierr);
         }
       else if (settings.conjugate_gradients())
@@ -222,6 +257,83 @@ namespace pdfem
       amg_matrix = &K;
       amg_stale  = false;
       return true;
+    }
+
+    unsigned int
+    LinearSolver::solve_with_earlier_factors(
+      const TrilinosWrappers::SparseMatrix &K,
+      TrilinosWrappers::MPI::Vector        &x,
+      const TrilinosWrappers::MPI::Vector  &b)
+    {
+      // x_0 = the earlier factors' solution; then GMRES on K's new values
+      // for the correction, preconditioned (on the right: the tolerance is
+      // on the true residual) by the same factors. It may take half as many
+      // iterations as a new factorisation costs solves with the factors (at
+      // most 50): a reuse that needs more hardly pays, and 0 tells the caller
+      // to factorise. The budget comes from MUMPS's operation counts, not
+      // from timings, so that a run repeats itself to the bit. The target,
+      // 1e-12 of |b| (a direct solve's accuracy for what the drivers check,
+      // whatever the Tolerance of the iterative paths), does not go below
+      // what rounding allows (10^-14 |K|_inf |x_0|): a right-hand side that
+      // is itself round-off (a second Newton iteration of a linear problem)
+      // is done with x_0.
+      const double budget =
+        std::min(0.5 * direct->solves_per_factorization, 50.);
+      if (budget < 2.)
+        return 0;
+      const auto apply_factors =
+        [this](TrilinosWrappers::MPI::Vector       &z,
+               const TrilinosWrappers::MPI::Vector &r) {
+          if (const int ierr =
+                direct->solve(z.trilinos_vector(), r.trilinos_vector()))
+            throw RunFailure("singular matrix",
+                             "the direct solver failed: the solve returned " +
+                               std::to_string(ierr));
+        };
+      apply_factors(x, b);
+      TrilinosWrappers::MPI::Vector r(b), dx(b);
+      K.vmult(r, x);
+      r.sadd(-1., 1., b);
+      const double target = std::max(settings.tolerance * b.l2_norm(),
+                                     1e-14 * K.linfty_norm() * x.l2_norm());
+      if (!std::isfinite(r.l2_norm()))
+        return 0;
+      unsigned int iterations = 1;
+      if (r.l2_norm() > target)
+        {
+          struct EarlierFactors
+          {
+            const decltype(apply_factors) &apply;
+            void
+            vmult(TrilinosWrappers::MPI::Vector       &z,
+                  const TrilinosWrappers::MPI::Vector &v) const
+            {
+              apply(z, v);
+            }
+          };
+          const unsigned int max_steps = static_cast<unsigned int>(budget) - 1;
+          SolverControl      control(max_steps, target, false, false);
+          SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+            control,
+            SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+              max_steps + 2, true));
+          dx = 0.;
+          try
+            {
+              gmres.solve(K, dx, r, EarlierFactors{apply_factors});
+            }
+          catch (const SolverControl::NoConvergence &)
+            {
+              return 0;
+            }
+          x += dx;
+          iterations += control.last_step();
+        }
+      if (!std::isfinite(x.l2_norm()))
+        return 0;
+      ++reused_solves;
+      reused_iterations += iterations;
+      return iterations;
     }
 
     void

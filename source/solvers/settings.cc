@@ -70,6 +70,17 @@ namespace pdfem
                         "2000",
                         Integer(1),
                         "gmres, cg: iteration limit.");
+      prm.declare_entry(
+        "Factorization reuse",
+        "true",
+        Bool(),
+        "direct: a matrix whose values changed (a new Newton tangent, "
+        "broken bonds) is first solved with the factors of its earlier "
+        "values, corrected by GMRES preconditioned with them to 1e-12 of "
+        "the right-hand side, within half as many iterations as MUMPS counts "
+        "solves in one factorisation (at most 50); only where that does not "
+        "converge is it factorised again. "
+        "false: every change is factorised (KLU always is).");
       prm.declare_entry("GMRES restart",
                         "150",
                         Integer(5, 2000),
@@ -130,12 +141,13 @@ namespace pdfem
     Settings::parse(ParameterHandler &prm, const std::string &)
     {
       prm.enter_subsection("Linear solver");
-      type           = prm.get("Type");
-      direct_solver  = prm.get("Direct solver");
-      preconditioner = prm.get("Preconditioner");
-      tolerance      = prm.get_double("Tolerance");
-      max_iterations = prm.get_integer("Max iterations");
-      restart        = prm.get_integer("GMRES restart");
+      type                = prm.get("Type");
+      direct_solver       = prm.get("Direct solver");
+      preconditioner      = prm.get("Preconditioner");
+      tolerance           = prm.get_double("Tolerance");
+      max_iterations      = prm.get_integer("Max iterations");
+      restart             = prm.get_integer("GMRES restart");
+      reuse_factorization = prm.get_bool("Factorization reuse");
       prm.leave_subsection();
     }
 

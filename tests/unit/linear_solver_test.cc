@@ -14,6 +14,8 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 namespace
@@ -133,6 +135,96 @@ namespace
         EXPECT_EQ(solver.n_analyses(), 3u) << package;
       }
   }
+  /// The 5-point Laplacian of an n x n grid with diagonal @p d (rows in
+  /// blocks over the ranks): its factors cost many solves, as a PD
+  /// tangent's do.
+  void
+  make_laplacian(TrilinosWrappers::SparseMatrix &A,
+                 const IndexSet                 &owned,
+                 const unsigned int              n,
+                 const double                    d)
+  {
+    const auto neighbours = [n](const unsigned int i) {
+      std::vector<unsigned int> list{i};
+      const unsigned int        x = i % n, y = i / n;
+      if (x > 0)
+        list.push_back(i - 1);
+      if (x + 1 < n)
+        list.push_back(i + 1);
+      if (y > 0)
+        list.push_back(i - n);
+      if (y + 1 < n)
+        list.push_back(i + n);
+      return list;
+    };
+    TrilinosWrappers::SparsityPattern sp(owned, MPI_COMM_WORLD);
+    for (const auto i : owned)
+      for (const unsigned int j : neighbours(i))
+        sp.add(i, j);
+    sp.compress();
+    A.reinit(sp);
+    for (const auto i : owned)
+      for (const unsigned int j : neighbours(i))
+        A.set(i, j, i == j ? d : -1.);
+    A.compress(VectorOperation::insert);
+  }
+
+  TEST(LinearSolver, ChangedMatrixIsSolvedWithTheEarlierFactorsWhileThatPays)
+  {
+    const unsigned int             n     = 60;
+    const IndexSet                 owned = owned_rows(n * n);
+    TrilinosWrappers::SparseMatrix A;
+    make_laplacian(A, owned, n, 4.1);
+    TrilinosWrappers::MPI::Vector b(owned, MPI_COMM_WORLD), x(b);
+    for (const auto i : owned)
+      b[i] = 1. + std::sin(0.1 * i);
+    b.compress(VectorOperation::insert);
+
+    for (const bool reuse : {true, false})
+      {
+        pdfem::Solvers::Settings settings = direct_settings("mumps");
+        settings.reuse_factorization      = reuse;
+        pdfem::Solvers::LinearSolver solver(settings);
+        make_laplacian(A, owned, n, 4.1);
+        solver.solve(A, x, b);
+        EXPECT_EQ(solver.n_factorizations(), 1u);
+
+        // A new tangent a little different (as Newton's next one): GMRES
+        // with the earlier factors reaches the tolerance in a few
+        // iterations, and the solution is that of the new values.
+        for (const auto i : owned)
+          A.set(i, i, 4.1 * (1. + 0.005 * std::cos(0.3 * i)));
+        A.compress(VectorOperation::insert);
+        solver.matrix_changed();
+        const unsigned int its = solver.solve(A, x, b);
+        EXPECT_LT(relative_residual(A, x, b), 1e-9) << reuse;
+        if (reuse)
+          {
+            EXPECT_EQ(solver.n_factorizations(), 1u);
+            EXPECT_EQ(solver.n_reused_factorization_solves(), 1u);
+            EXPECT_GT(its, 1u);
+            EXPECT_LT(its, 10u);
+            EXPECT_EQ(solver.n_reused_factorization_iterations(), its);
+          }
+        else
+          {
+            EXPECT_EQ(solver.n_factorizations(), 2u);
+            EXPECT_EQ(solver.n_reused_factorization_solves(), 0u);
+          }
+
+        // Values far from the factors' (an indefinite shift): GMRES does
+        // not converge within the budget, the matrix is factorised again.
+        for (const auto i : owned)
+          A.set(i, i, i % 7 == 0 ? -3. : 4.1);
+        A.compress(VectorOperation::insert);
+        solver.matrix_changed();
+        solver.solve(A, x, b);
+        EXPECT_LT(relative_residual(A, x, b), 1e-9) << reuse;
+        EXPECT_EQ(solver.n_factorizations(), reuse ? 2u : 3u);
+        EXPECT_EQ(solver.n_reused_factorization_solves(), reuse ? 1u : 0u);
+      }
+  }
+
   TEST(LinearSolver, DirectOnASingularMatrixFailsWithOneLine)
   {
     for (const std::string package : {"mumps", "klu"})

@@ -129,6 +129,19 @@ namespace pdfem
         return factorizations;
       }
 
+      /// The number of solves with the factors of a matrix's earlier
+      /// values (Factorization reuse), and their GMRES iterations.
+      unsigned int
+      n_reused_factorization_solves() const
+      {
+        return reused_solves;
+      }
+      unsigned int
+      n_reused_factorization_iterations() const
+      {
+        return reused_iterations;
+      }
+
       /// The number of direct symbolic analyses so far.
       unsigned int
       n_analyses() const
@@ -177,6 +190,20 @@ namespace pdfem
       void
       record_matrix_amg(bool rebuilt, unsigned int iterations);
 
+      /**
+       * The direct path after matrix_changed() (Factorization reuse): the
+       * factors of @p K's earlier values solve once, then GMRES on its new
+       * values, preconditioned by them, corrects to the Tolerance, within
+       * as many solves as MUMPS counts in one factorisation. Returns the
+       * solves with the factors, or 0 where that budget does not suffice
+       * (or is under 3, or unknown): then factorise.
+       */
+      unsigned int
+      solve_with_earlier_factors(
+        const dealii::TrilinosWrappers::SparseMatrix &K,
+        dealii::TrilinosWrappers::MPI::Vector        &x,
+        const dealii::TrilinosWrappers::MPI::Vector  &b);
+
       /// The assembled path with Type = cg.
       unsigned int
       solve_cg(const dealii::TrilinosWrappers::SparseMatrix &K,
@@ -197,8 +224,10 @@ namespace pdfem
       /// while that matrix is unchanged, its factorisation.
       struct DirectFactorization;
       std::unique_ptr<DirectFactorization> direct;
-      unsigned int                         factorizations = 0;
-      unsigned int                         analyses       = 0;
+      unsigned int                         factorizations    = 0;
+      unsigned int                         analyses          = 0;
+      unsigned int                         reused_solves     = 0;
+      unsigned int                         reused_iterations = 0;
     };
   } // namespace Solvers
 } // namespace pdfem

@@ -24,6 +24,9 @@ namespace pdfem
       double       tolerance      = 1e-10;    // relative residual (gmres)
       unsigned int max_iterations = 2000;
       unsigned int restart        = 150; // gmres: Krylov vectors kept
+      /// direct: a changed matrix is first solved by GMRES preconditioned
+      /// with the factors of its earlier values (LinearSolver).
+      bool reuse_factorization = true;
       /// Type = auto, resolved by resolve(): the system chooses between the
       /// matrix-free and the direct path by their measured costs
       /// (SolverChoice), starting as type says, for choice_reason.
