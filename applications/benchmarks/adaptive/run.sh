@@ -12,6 +12,9 @@
 # (error against time). Whole-process time (wall) beside pdfem's own ("total" in summary.json).
 #
 # usage: applications/benchmarks/adaptive/run.sh [BUILD_DIR] [OUT_DIR]
+# environment: CASES, the scenes (default "square_hole": a name of a scene of adaptive_fracture,
+# or the path of a scene file, e.g. a coarser lattice of one), NEWTON_STEPS (default "10 40";
+# empty: no Newton-only rows).
 source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" "${1:-}" "${2:-}"
 examples="$root/applications/examples/adaptive_fracture"
 csv="$out/adaptive.csv"
@@ -41,8 +44,12 @@ row() { # case method setting dir wall reference_dir
     "$(v "$d" problem.broken_bonds)" "$l2" "$dd" | tee -a "$csv"
 }
 
-for case in square_hole; do
+for case in ${CASES:-square_hole}; do
   scene="$examples/$case.prm"
+  if [ -f "$case" ]; then
+    scene=$(realpath "$case")
+    case=$(basename "$case" .prm)
+  fi
   # the adaptive run first: its explicit increment sets the ADR reference's load steps
   w_ad1=$(run "$work/$case-adaptive-1" "$scene")
   t_n=$(v "$work/$case-adaptive-1" final.first_switch_load_factor)
@@ -56,7 +63,7 @@ for case in square_hole; do
   row "$case" adaptive "run 1" "$work/$case-adaptive-1" "$w_ad1" "$ref"
   row "$case" adr "$steps load steps, run 2" "$work/$case-adr-2" "$w_adr2" "$ref"
   row "$case" adaptive "run 2" "$work/$case-adaptive-2" "$w_ad2" "$ref"
-  for n in 10 40; do
+  for n in ${NEWTON_STEPS-10 40}; do
     w=$(run "$work/$case-newton-$n" "$scene" --set "Driver/Type=newton" --set "Driver/Load steps=$n")
     row "$case" newton "$n load steps" "$work/$case-newton-$n" "$w" "$ref"
   done
