@@ -294,8 +294,8 @@ namespace pdfem
       TrilinosWrappers::MPI::Vector r(b), dx(b);
       K.vmult(r, x);
       r.sadd(-1., 1., b);
-      const double target = std::max(settings.tolerance * b.l2_norm(),
-                                     1e-14 * K.linfty_norm() * x.l2_norm());
+      const double target =
+        std::max(1e-12 * b.l2_norm(), 1e-14 * K.linfty_norm() * x.l2_norm());
       if (!std::isfinite(r.l2_norm()))
         return 0;
       unsigned int iterations = 1;
