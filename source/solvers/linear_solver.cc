@@ -94,9 +94,21 @@ namespace pdfem
       /// Factors of earlier values of the same pattern exist.
       bool has_factors = false;
       /// How many solves with the factors cost one numeric factorisation
-      /// (MUMPS's own counts: its factorisation's flops over two per
-      /// factor entry; 0 unknown, as with KLU).
+      /// in time (0 unknown, as with KLU): MUMPS's counts, its
+      /// factorisation's flops over two per factor entry, divided by 10,
+      /// since its dense kernels run the factorisation's flops about ten
+      /// times faster than the triangular solves' (measured t_factorise /
+      /// t_solve against that count: 14 / 140 on case 2 of Hu et al.,
+      /// 38 / 358 and 63 / 735 on the 3D cantilever at 2 and 1 cm).
       double solves_per_factorization = 0.;
+      /// Solves beyond one per solve spent with the present factors (the
+      /// reuses' extra cost): reuse stops once it reaches the cost of a
+      /// factorisation (ski rental: at most twice the best cost).
+      double extra_solves = 0.;
+      /// Changes of the matrix to factorise without trying the earlier
+      /// factors, after reuses that did not converge (1, 3, 7, ... after
+      /// 1, 2, 3 failures in a row).
+      unsigned int skip_reuse = 0, failed_reuses = 0;
 
       /// x = the factors' solution for b.
       int
@@ -174,6 +186,7 @@ namespace pdfem
               direct->has_factors = true;
               ++factorizations;
               direct->solves_per_factorization = 0.;
+              direct->extra_solves             = 0.;
               if (const auto *mumps =
                     dynamic_cast<Amesos_Mumps *>(direct->solver.get()))
                 {
@@ -183,7 +196,8 @@ namespace pdfem
                   const double flops   = m->GetRINFOG()[2];
                   const double entries = m->GetINFOG()[28];
                   if (flops > 0. && entries > 0.)
-                    direct->solves_per_factorization = flops / (2. * entries);
+                    direct->solves_per_factorization =
+                      0.1 * flops / (2. * entries);
                 }
             }
           if (const int ierr =
@@ -267,20 +281,32 @@ namespace pdfem
     {
       // x_0 = the earlier factors' solution; then GMRES on K's new values
       // for the correction, preconditioned (on the right: the tolerance is
-      // on the true residual) by the same factors. It may take half as many
-      // iterations as a new factorisation costs solves with the factors (at
-      // most 50): a reuse that needs more hardly pays, and 0 tells the caller
-      // to factorise. The budget comes from MUMPS's operation counts, not
-      // from timings, so that a run repeats itself to the bit. The target,
-      // 1e-12 of |b| (a direct solve's accuracy for what the drivers check,
-      // whatever the Tolerance of the iterative paths), does not go below
-      // what rounding allows (10^-14 |K|_inf |x_0|): a right-hand side that
-      // is itself round-off (a second Newton iteration of a linear problem)
-      // is done with x_0.
+      // on the true residual) by the same factors, while the solves spent
+      // beyond one per solve since the factorisation stay below what a
+      // factorisation costs (at most 50 in one solve); where GMRES needs
+      // more, 0 tells the caller to factorise, and the next changes skip
+      // the attempt (1, 3, 7, ... after failures in a row). The budget
+      // comes from MUMPS's operation counts, not from timings, so that a
+      // run repeats itself to the bit. The target, 1e-12 of |b| (a direct
+      // solve's accuracy for what the drivers check, whatever the
+      // Tolerance of the iterative paths), does not go below what rounding
+      // allows (10^-14 |K|_inf |x_0|): a right-hand side that is itself
+      // round-off (a second Newton iteration of a linear problem) is done
+      // with x_0.
+      if (direct->skip_reuse > 0)
+        {
+          --direct->skip_reuse;
+          return 0;
+        }
       const double budget =
-        std::min(0.5 * direct->solves_per_factorization, 50.);
+        std::min(direct->solves_per_factorization - direct->extra_solves, 50.);
       if (budget < 2.)
         return 0;
+      const auto give_up = [this]() {
+        ++direct->failed_reuses;
+        direct->skip_reuse = (1u << std::min(direct->failed_reuses, 10u)) - 1;
+        return 0u;
+      };
       const auto apply_factors =
         [this](TrilinosWrappers::MPI::Vector       &z,
                const TrilinosWrappers::MPI::Vector &r) {
@@ -297,7 +323,7 @@ namespace pdfem
       const double target =
         std::max(1e-12 * b.l2_norm(), 1e-14 * K.linfty_norm() * x.l2_norm());
       if (!std::isfinite(r.l2_norm()))
-        return 0;
+        return give_up();
       unsigned int iterations = 1;
       if (r.l2_norm() > target)
         {
@@ -324,13 +350,15 @@ namespace pdfem
             }
           catch (const SolverControl::NoConvergence &)
             {
-              return 0;
+              return give_up();
             }
           x += dx;
           iterations += control.last_step();
         }
       if (!std::isfinite(x.l2_norm()))
-        return 0;
+        return give_up();
+      direct->failed_reuses = 0;
+      direct->extra_solves += iterations - 1;
       ++reused_solves;
       reused_iterations += iterations;
       return iterations;
