@@ -77,9 +77,10 @@ namespace pdfem
         "direct: a matrix whose values changed (a new Newton tangent, "
         "broken bonds) is first solved with the factors of its earlier "
         "values, corrected by GMRES preconditioned with them to 1e-12 of "
-        "the right-hand side, within half as many iterations as MUMPS counts "
-        "solves in one factorisation (at most 50); only where that does not "
-        "converge is it factorised again. "
+        "the right-hand side, while the extra solves since the "
+        "factorisation stay below what one factorisation costs (from "
+        "MUMPS's counts); only where that does not converge is it "
+        "factorised again. "
         "false: every change is factorised (KLU always is).");
       prm.declare_entry("GMRES restart",
                         "150",

@@ -61,7 +61,7 @@ for case in ${CASES:-square_hole}; do
   ref="$work/$case-adr-1"
   row "$case" adr "$steps load steps" "$ref" "$w_adr1" ""
   row "$case" adaptive "run 1" "$work/$case-adaptive-1" "$w_ad1" "$ref"
-  row "$case" adr "$steps load steps, run 2" "$work/$case-adr-2" "$w_adr2" "$ref"
+  row "$case" adr "$steps load steps (run 2)" "$work/$case-adr-2" "$w_adr2" "$ref"
   row "$case" adaptive "run 2" "$work/$case-adaptive-2" "$w_ad2" "$ref"
   for n in ${NEWTON_STEPS-10 40}; do
     w=$(run "$work/$case-newton-$n" "$scene" --set "Driver/Type=newton" --set "Driver/Load steps=$n")
