@@ -348,11 +348,12 @@ namespace pdfem
              double                *f_out) const override
       {
         // The bond law of BondBasedBond<dim>::force() written out on raw
-        // arrays with |xi| kept per bond: one square root and two divisions
-        // per bond instead of four square roots, three divisions and the
-        // tensor temporaries. Case 2 of Hu et al. (square_hole.prm, 75 k
-        // bonds) relaxed in 40 load steps (8 378 iterations): see
-        // doc/changes/20261126_bond_based_kernel.md for the times.
+        // arrays with |xi| and 1/|xi| kept per bond: one square root and
+        // one division per bond (two near or past the onset) instead of four
+        // square roots, three divisions and the tensor temporaries. Case 2 of
+        // Hu et al. (square_hole.prm, 75 k bonds) relaxed in 40 load steps (8
+        // 378 iterations): see doc/changes/20261126_bond_based_kernel.md for
+        // the times.
         const PD::Families &f            = *this->region.families;
         const auto         &x            = *this->region.position;
         const double       *uv           = u.values;
