@@ -11,11 +11,20 @@
 # adaptive_stability_newton.png, _relaxation.png, _density.png, _switches.png (CHARTS_ONLY=1:
 # redraw them from the CSV without running).
 #
+# Other cases: SCENE (a scene file), PULL (its `Boundary conditions/Dirichlet=...` override, empty
+# for none) and PREFIX (the names of the CSV and charts, default adaptive_stability), e.g. case 3 on
+# a 4 mm lattice: SCENE=applications/benchmarks/adaptive/three_point_bending_coarse.prm PULL=
+# PREFIX=adaptive_stability_case3; case 4 on 5 mm: SCENE=tests/scenes/adaptive_multi_hole.prm
+# PULL= PREFIX=adaptive_stability_case4.
+#
 # usage: applications/benchmarks/adaptive/stability.sh [BUILD_DIR] [OUT_DIR]
 source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" "${1:-}" "${2:-}"
-scene="$root/tests/scenes/adaptive_square_hole.prm"
-pull="Boundary conditions/Dirichlet=bottom: x = 0; bottom: y = -0.000275*t; top: x = 0; top: y = 0.000275*t"
-csv="$out/adaptive_stability.csv"
+scene=$(realpath "${SCENE:-$root/tests/scenes/adaptive_square_hole.prm}")
+pull=${PULL-"Boundary conditions/Dirichlet=bottom: x = 0; bottom: y = -0.000275*t; top: x = 0; top: y = 0.000275*t"}
+prefix=${PREFIX:-adaptive_stability}
+pull_args=()
+[ -z "$pull" ] || pull_args=(--set "$pull")
+csv="$out/$prefix.csv"
 if [ -z "${CHARTS_ONLY:-}" ]; then # CHARTS_ONLY=1: redraw the charts of the existing CSV
 echo "method,parameter,value,exit_state,load_reached,pdfem_s,relaxation_iterations,newton_iterations,step_cuts,switches,broken_bonds" > "$csv"
 
@@ -23,7 +32,7 @@ one() { # method parameter value [--set ...]
   local m=$1 p=$2 x=$3 d="$work/run"
   shift 3
   rm -rf "$d"
-  "$pdfem" "$scene" --output "$d" --quiet --set "$pull" --set "Driver/Residual tolerance=1e-8" "$@" > /dev/null 2>&1 || true
+  "$pdfem" "$scene" --output "$d" --quiet "${pull_args[@]}" --set "Output/Write vtu=false" --set "Driver/Residual tolerance=1e-8" "$@" > /dev/null 2>&1 || true
   local reached
   reached=$(tail -n 1 "$d/history.csv" 2> /dev/null | cut -d, -f3)
   [ -n "$reached" ] && [ "$reached" != load_factor ] || reached=0
@@ -61,16 +70,23 @@ if [ -x "$plot" ] && command -v xvfb-run > /dev/null; then
     shift 4
     xvfb-run -a "$plot" chart "$work/$o.csv" --x value --y "$y" --points "$@" --out "$out/$o.png" 2> /dev/null || true
   }
-  chart newton load_steps load_reached adaptive_stability_newton --logx --xlabel "load steps" \
+  # the facts the labels name, from the CSV: the adaptive damping's iterations and the runs that
+  # did not complete
+  adaptive_its=$(awk -F, '$1 == "relaxation" && $2 == "damping" && $3 == "adaptive" { print $7 }' "$csv")
+  failed() { # method parameter -> "stopped: v1 (t = ...), v2 (t = ...)" or "all complete"
+    awk -F, -v m="$1" -v p="$2" '$1 == m && $2 == p && $4 != "completed" { l = l (l ? ", " : "") $3 sprintf(" (t = %.2g)", $5) }
+      END { print (l ? "stopped: " l : "all complete") }' "$csv"
+  }
+  chart newton load_steps load_reached "${prefix}_newton" --logx --xlabel "load steps" \
     --ylabel "load factor reached (Newton stops 'unstable')" --legend none \
     --title "Newton: where it stops, against the load steps"
-  chart relaxation damping relaxation_iterations adaptive_stability_relaxation --logy \
-    --xlabel "fixed damping c (adaptive: 4 674 iterations)" --ylabel "relaxation iterations, all steps" \
+  chart relaxation damping relaxation_iterations "${prefix}_relaxation" --logy \
+    --xlabel "fixed damping c (adaptive: $adaptive_its iterations; $(failed relaxation damping))" --ylabel "relaxation iterations, all steps" \
     --legend none --title "Dynamic relaxation: iterations against the damping"
-  chart relaxation density_factor relaxation_iterations adaptive_stability_density --logx \
-    --xlabel "density factor (0.25 and 0.5: diverged at step 1)" --ylabel "relaxation iterations, all steps" \
+  chart relaxation density_factor relaxation_iterations "${prefix}_density" --logx \
+    --xlabel "density factor ($(failed relaxation density_factor))" --ylabel "relaxation iterations, all steps" \
     --legend none --title "Dynamic relaxation: iterations against the fictitious density"
-  chart adaptive explicit_steps switches adaptive_stability_switches --logx --xlabel "explicit steps N_e" \
-    --ylabel "switches" --legend none --title "Adaptive: switches against N_e (N_e = 10: diverged at t = 0.8)"
+  chart adaptive explicit_steps switches "${prefix}_switches" --logx --xlabel "explicit steps N_e" \
+    --ylabel "switches" --legend none --title "Adaptive: switches against N_e ($(failed adaptive explicit_steps))"
 fi
 echo "wrote $csv"
