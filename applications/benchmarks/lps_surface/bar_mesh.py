@@ -32,7 +32,7 @@ import sys
 # The .msh 2.2 writer of the dog-bone example's mesher.
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples",
                                 "lps_dog_bone"))
-from dog_bone_mesh import write_msh22  # noqa: E402
+from dog_bone_mesh import add_cube, end_faces, write_msh22  # noqa: E402
 
 
 def main(argv):
@@ -105,18 +105,10 @@ def main(argv):
                     continue
                 if hole > 0 and (x_of(i) + 0.5 * h) ** 2 + ((k + 0.5) * h - 0.5 * length) ** 2 <= hole * hole:
                     continue
-                c = [(i, j, k), (i + 1, j, k), (i + 1, j + 1, k), (i, j + 1, k),
-                     (i, j, k + 1), (i + 1, j, k + 1), (i + 1, j + 1, k + 1), (i, j + 1, k + 1)]
-                for p in c:
-                    if p not in node_id:
-                        node_id[p] = len(node_id) + 1
-                cells.append((tag, c))
+                add_cube(cells, node_id, tag, i, j, k)
     faces = []
-    for tag, c in cells:
-        if c[0][2] == k_lo:
-            faces.append((1, [c[0], c[3], c[2], c[1]]))
-        if c[4][2] == k_hi:
-            faces.append((2, [c[4], c[5], c[6], c[7]]))
+    for _, c in cells:
+        faces += end_faces(c, k_lo, k_hi)
         if not round_bar:
             i0, j0 = c[0][0], c[0][1]
             if i0 == 0:

@@ -54,6 +54,28 @@ def in_layer(x, y, z):
     return (-3.0 <= z < 0.0 or 117.0 < z <= 120.0) and math.hypot(x, y) <= 30.0
 
 
+def add_cube(cells, node_id, tag, i, j, k):
+    """Append the cube of lattice point (i, j, k) to cells as (tag, its 8 corners in gmsh's hexahedron
+    order), numbering the corners not yet in node_id (1, 2, ...)."""
+    corners = [(i, j, k), (i + 1, j, k), (i + 1, j + 1, k), (i, j + 1, k),
+               (i, j, k + 1), (i + 1, j, k + 1), (i + 1, j + 1, k + 1), (i, j + 1, k + 1)]
+    for c in corners:
+        if c not in node_id:
+            node_id[c] = len(node_id) + 1
+    cells.append((tag, corners))
+
+
+def end_faces(c, k_lo, k_hi):
+    """The faces of cube c (8 corners) on the planes k = k_lo ("bottom", 1) and k = k_hi ("top", 2),
+    as (surface tag, 4 lattice points), oriented outwards."""
+    faces = []
+    if c[0][2] == k_lo:
+        faces.append((1, [c[0], c[3], c[2], c[1]]))
+    if c[4][2] == k_hi:
+        faces.append((2, [c[4], c[5], c[6], c[7]]))
+    return faces
+
+
 def write_msh22(path, names, node_id, position_mm, points, faces, cells):
     """Writes a gmsh .msh 2.2 file: names [(dim, tag, name)], node_id {lattice point: id},
     position_mm(lattice point) in mm (written in m), and the elements as [(tag, item)] with a lattice
@@ -123,18 +145,10 @@ def main(argv):
                     tag = 12
                 else:
                     continue
-                corners = [(i, j, k), (i + 1, j, k), (i + 1, j + 1, k), (i, j + 1, k),
-                           (i, j, k + 1), (i + 1, j, k + 1), (i + 1, j + 1, k + 1), (i, j + 1, k + 1)]
-                for c in corners:
-                    if c not in node_id:
-                        node_id[c] = len(node_id) + 1
-                cells.append((tag, corners))
+                add_cube(cells, node_id, tag, i, j, k)
     faces = []  # (surface tag, 4 lattice points)
-    for tag, c in cells:
-        if c[0][2] == k_lo:
-            faces.append((1, [c[0], c[3], c[2], c[1]]))
-        if c[4][2] == k_hi:
-            faces.append((2, [c[4], c[5], c[6], c[7]]))
+    for _, c in cells:
+        faces += end_faces(c, k_lo, k_hi)
     k_mid = whole(58.5)
     i_a = (n - 1) // 2
     pins = [(3, (i_a, i_a, k_mid)), (4, (i_a + whole(10), i_a, k_mid))]
