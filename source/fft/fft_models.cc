@@ -13,6 +13,22 @@ namespace pdfem
   namespace FFT
   {
     using internal::symmetric_index;
+    using internal::symmetric_pair;
+
+    template <int dim>
+    void
+    FftOperator<dim>::Impl::subtract_P_term(const std::vector<double> &u,
+                                            const double               factor,
+                                            std::vector<double>       &L)
+    {
+      for_P([&](unsigned int s, std::size_t k, double v) {
+        unsigned int i, j;
+        symmetric_pair<dim>(s, i, j);
+        L[i * N + k] -= factor * u[j * N + k] * v;
+        if (i != j)
+          L[j * N + k] -= factor * u[i * N + k] * v;
+      });
+    }
 
     // ----------------------------------------------- linear bond based
     template <int dim>
@@ -22,6 +38,13 @@ namespace pdfem
     {
       // L_i = beta ([C_ij (beta u_j)] - u_j P_ij), P = [C beta]; the sum
       // over j of the first term in Fourier space (specs/002 eq. 58).
+      // Recomputed P: its term first, while the spectra are free.
+      const bool stored = stored_mask_fields;
+      if (!stored)
+        {
+          std::fill(L.begin(), L.end(), 0.);
+          subtract_P_term(u, 1., L);
+        }
       fftw_complex *h[dim];
       for (unsigned int j = 0; j < dim; ++j)
         {
@@ -35,6 +58,13 @@ namespace pdfem
         {
           inverse(spectrum(i));
           double *Li = L.data() + i * N;
+          if (!stored)
+            {
+              use([&](std::size_t k, double r) {
+                Li[k] = beta[k] * (Li[k] + r);
+              });
+              continue;
+            }
           use([&](std::size_t k, double r) {
             double s = r;
             for (unsigned int j = 0; j < dim; ++j)
@@ -46,28 +76,15 @@ namespace pdfem
 
     template <int dim>
     void
-    FftOperator<dim>::Impl::quadratic_form(
-      const std::vector<double>              &u,
-      const std::vector<Kernel>              &kernels,
-      const std::vector<std::vector<double>> &KB,
-      std::vector<double>                    &Q)
+    FftOperator<dim>::Impl::quadratic_form(const std::vector<double> &u,
+                                           const std::vector<Kernel> &kernels,
+                                           std::vector<double>       &Q)
     {
       // Q = sum_ij [K_ij (beta u_i u_j)] - 2 u_j S_j + u_i u_j [K_ij beta],
-      // S_j = sum_i [K_ij (beta u_i)] (specs/002 eq. 47, K symmetric).
-      fftw_complex *h = spectrum(dim + 1), *q = spectrum(dim);
-      // (spectrum(2) is the temporary of correlate_symmetric)
-      for (unsigned int i = 0; i < dim; ++i)
-        zero(spectrum(i));
+      // S_j = sum_i [K_ij (beta u_i)] (specs/002 eq. 47, K symmetric); at
+      // most dim work spectra at a time.
+      fftw_complex *q = spectrum(0), *h = spectrum(1);
       zero(q);
-      for (unsigned int i = 0; i < dim; ++i)
-        {
-          const double *ui = u.data() + i * N;
-          fill([&](std::size_t k) { return beta[k] * ui[k]; });
-          forward(h);
-          for (unsigned int j = 0; j < dim; ++j)
-            multiply(
-              spectrum(j), kernels[symmetric_index<dim>(i, j)], h, 1., true);
-        }
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = i; j < dim; ++j)
           {
@@ -80,21 +97,34 @@ namespace pdfem
                      i == j ? 1. : 2.,
                      true);
           }
-      Q.resize(N);
       inverse(q);
-      use([&](std::size_t k, double r) {
-        double s = r;
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            s +=
-              u[i * N + k] * u[j * N + k] * KB[symmetric_index<dim>(i, j)][k];
-        Q[k] = s;
-      });
+      take(Q);
+      fftw_complex *S[dim];
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          S[i]             = spectrum(i);
+          const double *ui = u.data() + i * N;
+          fill([&](std::size_t k) { return beta[k] * ui[k]; });
+          forward(S[i]);
+        }
+      fused_product(S, &kernels, 1., nullptr, nullptr, 0., nullptr);
       for (unsigned int j = 0; j < dim; ++j)
         {
-          inverse(spectrum(j));
+          inverse(S[j]);
           use([&](std::size_t k, double r) { Q[k] -= 2. * u[j * N + k] * r; });
         }
+      // + u_i u_j [K_ij beta]: P of the linear bond-based model, recomputed
+      // for LPS (whose P is the combined variable-m field)
+      const auto add = [&](unsigned int s, std::size_t k, double v) {
+        unsigned int i, j;
+        symmetric_pair<dim>(s, i, j);
+        Q[k] += (i == j ? 1. : 2.) * u[i * N + k] * u[j * N + k] * v;
+      };
+      if (material.model == Model::lps)
+        for_correlations(
+          kernels, [this](std::size_t k) { return beta[k]; }, 0, add);
+      else
+        for_P(add);
     }
 
     // -------------------------------------------- nonlinear bond based
@@ -214,10 +244,19 @@ namespace pdfem
     template <int dim>
     void
     FftOperator<dim>::Impl::lps_dilatation(const std::vector<double> &u,
-                                           const bool                 keep_sums)
+                                           const bool                 keep_sums,
+                                           const std::vector<double> *gb_fields)
     {
       // theta = dim beta / m ([g_i (beta u_i)] - u_i [g_i beta]),
       // g = omega xi (specs/002 §1.4 with §7 E3, E4).
+      theta.resize(N);
+      if (gb_fields == nullptr)
+        {
+          std::fill(theta.begin(), theta.end(), 0.);
+          for_gb([&](unsigned int i, std::size_t k, double r) {
+            theta[k] -= u[i * N + k] * r;
+          });
+        }
       fftw_complex *acc = spectrum(dim), *h[dim];
       for (unsigned int j = 0; j < dim; ++j)
         {
@@ -229,11 +268,13 @@ namespace pdfem
       // acc = sum_j g_j (beta u_j)^; with keep_sums h[i] <- sum_j K_ij h[j]
       fused_product(h, keep_sums ? &K : nullptr, 1., &g, nullptr, 0., acc);
       inverse(acc);
-      theta.resize(N);
       use([&](std::size_t k, double r) {
         double s = r;
-        for (unsigned int i = 0; i < dim; ++i)
-          s -= u[i * N + k] * gb[i][k];
+        if (gb_fields == nullptr)
+          s += theta[k];
+        else
+          for (unsigned int i = 0; i < dim; ++i)
+            s -= u[i * N + k] * (*gb_fields)[i * N + k];
         theta[k] = dim * beta[k] * minv[k] * s;
       });
     }
@@ -245,13 +286,23 @@ namespace pdfem
     {
       // L_i = beta { A [(theta/m) [g_i beta] + [g_i (beta theta/m)]]
       //   + B [(1/m) [K_ij (beta u_j)] + [K_ij (beta u_j/m)] - u_j P_ij] }
-      // (the variable-m form of specs/002 §1.4).
-      lps_dilatation(u, true);
+      // (the variable-m form of specs/002 §1.4). Recomputed mask fields:
+      // L holds [g_i beta] until theta is known, and the P term comes
+      // last, when the spectra are free.
+      const bool stored = stored_mask_fields;
+      if (!stored)
+        for_gb(
+          [&](unsigned int i, std::size_t k, double r) { L[i * N + k] = r; });
+      const double *gbf = stored ? gb.data() : L.data();
+      lps_dilatation(u, true, stored ? &gb : &L);
       for (unsigned int i = 0; i < dim; ++i)
         {
           inverse(spectrum(i));
-          double *Li = L.data() + i * N;
-          use([&](std::size_t k, double r) { Li[k] = B * minv[k] * r; });
+          double       *Li = L.data() + i * N;
+          const double *gi = gbf + i * N;
+          use([&](std::size_t k, double r) {
+            Li[k] = minv[k] * (A * theta[k] * gi[k] + B * r);
+          });
         }
       fftw_complex *h[dim], *ht = spectrum(dim);
       for (unsigned int j = 0; j < dim; ++j)
@@ -268,12 +319,25 @@ namespace pdfem
         {
           inverse(spectrum(i));
           double *Li = L.data() + i * N;
+          if (!stored)
+            {
+              use([&](std::size_t k, double r) { Li[k] += r; });
+              continue;
+            }
           use([&](std::size_t k, double r) {
-            double s = Li[k] + r + A * theta[k] * minv[k] * gb[i][k];
+            double s = Li[k] + r;
             for (unsigned int j = 0; j < dim; ++j)
               s -= B * u[j * N + k] * P[symmetric_index<dim>(i, j)][k];
             Li[k] = beta[k] * s;
           });
+        }
+      if (stored)
+        return;
+      subtract_P_term(u, B, L);
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          double *Li = L.data() + i * N;
+          for_nodes([&](std::size_t k, std::size_t) { Li[k] *= beta[k]; });
         }
     }
 
@@ -285,11 +349,10 @@ namespace pdfem
   template void FftOperator<dim>::Impl::apply_lps(const std::vector<double> &, \
                                                   std::vector<double> &);      \
   template void FftOperator<dim>::Impl::lps_dilatation(                        \
-    const std::vector<double> &, bool);                                        \
+    const std::vector<double> &, bool, const std::vector<double> *);           \
   template void FftOperator<dim>::Impl::quadratic_form(                        \
     const std::vector<double> &,                                               \
     const std::vector<Kernel> &,                                               \
-    const std::vector<std::vector<double>> &,                                  \
     std::vector<double> &);
     PDFEM_FFT_INSTANTIATE(2)
     PDFEM_FFT_INSTANTIATE(3)

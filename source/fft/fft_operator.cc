@@ -109,6 +109,8 @@ namespace pdfem
       , distributed(several_ranks(options.communicator))
       , comm(options.communicator)
       , offsets(horizon_offsets(grid_, material_.horizon))
+      , keep_mask_fields(options.keep_mask_fields ||
+                         material_.model == Model::nonlinear_bond_based)
     {
       N_global = grid.n_nodes();
       row      = grid.n[dim - 1];
@@ -172,7 +174,66 @@ namespace pdfem
       }
       if (forward_plan == nullptr || inverse_plan == nullptr)
         throw std::runtime_error("FFTW could not make a plan");
+      make_fold();
       make_kernels();
+    }
+
+    template <int dim>
+    void
+    FftOperator<dim>::Impl::make_fold()
+    {
+      // the local modes: one rank k_0, k_1, ... (k_{dim-1} < n/2 + 1);
+      // several: FFTW's transposed layout, k_1 (distributed) before k_0
+      std::array<std::size_t, dim> first{};
+      for (unsigned int p = 0; p < dim; ++p)
+        fold.order[p] = p;
+      if (distributed)
+        {
+          fold.order[0] = 1;
+          fold.order[1] = 0;
+          first[1]      = k1_first;
+        }
+      for (unsigned int p = 0; p < dim; ++p)
+        {
+          const unsigned int d = fold.order[p];
+          fold.extent[p]       = (distributed && d == 1) ? k1_count : cn[d];
+        }
+      std::array<std::size_t, dim> folded_extent{};
+      for (unsigned int p = 0; p < dim; ++p)
+        {
+          const unsigned int d = fold.order[p];
+          const std::size_t  n = grid.n[d];
+          // k_d -> min(k_d, n_d - k_d); the last direction is a half
+          // spectrum already
+          std::vector<std::size_t> folded(fold.extent[p]);
+          fold.reflected[d].resize(fold.extent[p]);
+          for (std::size_t i = 0; i < fold.extent[p]; ++i)
+            {
+              const std::size_t k    = first[d] + i;
+              const bool        refl = d + 1 < dim && 2 * k > n;
+              folded[i]              = refl ? n - k : k;
+              fold.reflected[d][i]   = refl;
+            }
+          // this rank's folded wave numbers, numbered in increasing order
+          std::vector<std::size_t> distinct = folded;
+          std::sort(distinct.begin(), distinct.end());
+          distinct.erase(std::unique(distinct.begin(), distinct.end()),
+                         distinct.end());
+          fold.index[d].resize(fold.extent[p]);
+          for (std::size_t i = 0; i < fold.extent[p]; ++i)
+            fold.index[d][i] =
+              std::lower_bound(distinct.begin(), distinct.end(), folded[i]) -
+              distinct.begin();
+          folded_extent[d] = distinct.size();
+        }
+      fold.size = 1;
+      for (int d = dim - 1; d >= 0; --d)
+        {
+          fold.stride[d] = fold.size;
+          fold.size *= folded_extent[d];
+        }
+      if (Nc == 0)
+        fold.size = 0;
     }
 
     template <int dim>
@@ -202,9 +263,9 @@ namespace pdfem
     template <int dim>
     template <typename F>
     typename FftOperator<dim>::Impl::Kernel
-    FftOperator<dim>::Impl::make_kernel(const F     &value,
-                                        const bool   odd,
-                                        const double scale)
+    FftOperator<dim>::Impl::make_kernel(const F           &value,
+                                        const unsigned int parity,
+                                        const double       scale)
     {
       // sampled on this rank's slab (a kernel is a function of the
       // periodic offset: each rank samples its own planes)
@@ -224,11 +285,15 @@ namespace pdfem
       fftw_complex *s = spectrum(0);
       forward(s);
       Kernel k;
-      k.odd = odd;
-      k.s.resize(Nc);
-      // conj(k^) = k^ (even: real) or -i Im k^ (odd).
-      for (std::size_t j = 0; j < Nc; ++j)
-        k.s[j] = scale * (odd ? -s[j][1] : s[j][0]);
+      k.parity = parity;
+      k.odd    = __builtin_parity(parity);
+      k.s.assign(fold.size, 0.);
+      // conj(k^) = k^ (even: real) or -i Im k^ (odd), on the folded modes
+      // (a folded mode met several times gets the same value to round-off;
+      // one thread, so the last one written is always the same)
+      walk_modes(0, Nc, [&](std::size_t j, std::size_t o, unsigned int flips) {
+        k.s[o] = sign(parity, flips) * scale * (k.odd ? -s[j][1] : s[j][0]);
+      });
       return k;
     }
 
@@ -252,7 +317,7 @@ namespace pdfem
                     return alpha * omega(o) * o.xi[i] * o.xi[j] /
                            (o.length * o.length);
                   },
-                  false,
+                  (1u << i) ^ (1u << j),
                   scale));
             if (material.model == Model::linear_bond_based)
               break;
@@ -261,13 +326,13 @@ namespace pdfem
                 [&](const Offset<dim> &o) {
                   return alpha * omega(o) * o.xi[i] / (o.length * o.length);
                 },
-                true,
+                1u << i,
                 scale));
             c = make_kernel(
               [&](const Offset<dim> &o) {
                 return alpha * omega(o) / (o.length * o.length);
               },
-              false,
+              0u,
               scale);
             break;
           case Model::lps:
@@ -277,31 +342,14 @@ namespace pdfem
                   [&](const Offset<dim> &o) {
                     return omega(o) * o.xi[i] * o.xi[j] / (o.length * o.length);
                   },
-                  false,
+                  (1u << i) ^ (1u << j),
                   scale));
             for (unsigned int i = 0; i < dim; ++i)
               g.push_back(make_kernel(
                 [&](const Offset<dim> &o) { return omega(o) * o.xi[i]; },
-                true,
+                1u << i,
                 scale));
             break;
-        }
-    }
-
-    template <int dim>
-    void
-    FftOperator<dim>::Impl::correlate_symmetric(
-      const std::vector<Kernel>        &kernels,
-      const fftw_complex               *b,
-      std::vector<std::vector<double>> &out)
-    {
-      out.resize(kernels.size());
-      fftw_complex *t = spectrum(2);
-      for (unsigned int s = 0; s < kernels.size(); ++s)
-        {
-          multiply(t, kernels[s], b, 1., false);
-          inverse(t);
-          take(out[s]);
         }
     }
 
@@ -330,69 +378,86 @@ namespace pdfem
           (!integrity.empty() && integrity.size() != N))
         throw std::invalid_argument("FFT::FftOperator::set_masks: a mask has "
                                     "the wrong size");
-      o.body = internal::mask_or_one(body_mask, N);
+      const bool binary =
+        std::all_of(body_mask.begin(), body_mask.end(), [](double v) {
+          return v == 0. || v == 1.;
+        });
+      o.body_values.clear();
+      o.body_bits.clear();
+      if (binary)
+        {
+          o.body_bits.assign(N, 1);
+          for (std::size_t k = 0; k < body_mask.size(); ++k)
+            o.body_bits[k] = body_mask[k] != 0.;
+        }
+      else
+        o.body_values = body_mask;
       o.beta = internal::mask_or_one(integrity, N);
       for (std::size_t k = 0; k < N; ++k)
-        o.beta[k] *= o.body[k];
+        o.beta[k] *= o.body(k);
+      o.m.clear();
+      o.m.shrink_to_fit();
+      o.stored_mask_fields = false;
 
-      fftw_complex *b = o.spectrum(1), *t = o.spectrum(2);
-      o.fill([&](std::size_t k) { return o.beta[k]; });
-      o.forward(b);
-      if (this->material_.model != Model::lps)
+      const auto beta = [&o](std::size_t k) { return o.beta[k]; };
+      const auto made = [N](const unsigned int n) {
+        return std::vector<std::vector<double>>(n, std::vector<double>(N, 0.));
+      };
+      o.P.clear();
+      o.q.clear();
+      o.gb.clear();
+      if (this->material_.model == Model::lps)
         {
-          o.correlate_symmetric(o.C, b, o.P);
-          if (this->material_.model == Model::nonlinear_bond_based)
-            {
-              o.q.resize(dim);
-              for (unsigned int i = 0; i < dim; ++i)
-                {
-                  o.multiply(t, o.a[i], b, 1., false);
-                  o.inverse(t);
-                  o.take(o.q[i]);
-                }
-              o.multiply(t, o.c, b, 1., false);
-              o.inverse(t);
-              o.take(o.p);
-            }
-          return;
+          // 1/m, m = beta [omega |xi|^2 beta]
+          const std::vector<typename Impl::Kernel> w{o.make_kernel(
+            [&](const Offset<dim> &b_) {
+              return this->material_.omega(b_.length) * b_.length * b_.length;
+            },
+            0u,
+            o.dV / o.N_global)};
+          o.minv.resize(N);
+          o.for_correlations(w,
+                             beta,
+                             1,
+                             [&](unsigned int, std::size_t k, double r) {
+                               const double m = o.beta[k] * r;
+                               o.minv[k]      = m != 0. ? 1. / m : 0.;
+                             });
+          o.theta.assign(N, 0.);
         }
-
-      // LPS: m = beta [omega |xi|^2 beta], gb_i = [g_i beta],
-      // P_s = (1/m) [K_s beta] + [K_s (beta/m)].
-      {
-        const typename Impl::Kernel w = o.make_kernel(
-          [&](const Offset<dim> &b_) {
-            return this->material_.omega(b_.length) * b_.length * b_.length;
-          },
-          false,
-          o.dV / o.N_global);
-        o.multiply(t, w, b, 1., false);
-      }
-      o.inverse(t);
-      o.m.resize(N);
-      o.minv.resize(N);
-      o.use([&](std::size_t k, double r) {
-        o.m[k]    = o.beta[k] * r;
-        o.minv[k] = o.m[k] != 0. ? 1. / o.m[k] : 0.;
-      });
-      o.gb.resize(dim);
-      for (unsigned int i = 0; i < dim; ++i)
+      if (!o.keep_mask_fields)
+        return;
+      // the kept fields, made as recomputed ones are (stored_mask_fields is
+      // false until they are complete)
+      std::vector<std::vector<double>> P = made(o.C.size() + o.K.size());
+      o.for_P([&](unsigned int s, std::size_t k, double r) { P[s][k] += r; });
+      if (this->material_.model == Model::lps)
         {
-          o.multiply(t, o.g[i], b, 1., false);
-          o.inverse(t);
-          o.take(o.gb[i]);
+          o.gb.resize(dim * N);
+          o.for_gb([&](unsigned int i, std::size_t k, double r) {
+            o.gb[i * N + k] = r;
+          });
         }
-      o.correlate_symmetric(o.K, b, o.P);
-      o.fill([&](std::size_t k) { return o.beta[k] * o.minv[k]; });
-      o.forward(b);
-      for (unsigned int s = 0; s < o.K.size(); ++s)
+      if (this->material_.model == Model::nonlinear_bond_based)
         {
-          o.multiply(t, o.K[s], b, 1., false);
-          o.inverse(t);
-          auto &P = o.P[s];
-          o.use([&](std::size_t k, double r) { P[k] = o.minv[k] * P[k] + r; });
+          // q_i = [a_i beta], p = [c beta]
+          o.q = made(dim);
+          o.for_correlations(o.a,
+                             beta,
+                             1,
+                             [&](unsigned int i, std::size_t k, double r) {
+                               o.q[i][k] = r;
+                             });
+          o.p.resize(N);
+          o.for_correlations(std::vector<typename Impl::Kernel>{o.c},
+                             beta,
+                             1,
+                             [&](unsigned int, std::size_t k, double r) {
+                               o.p[k] = r;
+                             });
         }
-      o.theta.assign(N, 0.);
+      o.P                  = std::move(P);
+      o.stored_mask_fields = true;
     }
 
     // ------------------------------------------------------ public face
@@ -430,7 +495,9 @@ namespace pdfem
       if (u.size() != dim * impl->N)
         throw std::invalid_argument("FFT::FftOperator::dilatation: u has the "
                                     "wrong size");
-      impl->lps_dilatation(u, false);
+      impl->lps_dilatation(u,
+                           false,
+                           impl->stored_mask_fields ? &impl->gb : nullptr);
       theta = impl->theta;
     }
 
@@ -446,7 +513,7 @@ namespace pdfem
       switch (this->material_.model)
         {
           case Model::linear_bond_based:
-            o.quadratic_form(u, o.C, o.P, W);
+            o.quadratic_form(u, o.C, W);
             for (std::size_t k = 0; k < o.N; ++k)
               W[k] *= 0.5 * o.beta[k];
             return;
@@ -455,14 +522,10 @@ namespace pdfem
                                    "bond-based model yet");
           case Model::lps:
             {
-              o.lps_dilatation(u, false);
-              // [K_s beta] (P holds the combined variable-m field)
-              std::vector<std::vector<double>> KB;
-              fftw_complex                    *b = o.spectrum(dim + 1);
-              o.fill([&](std::size_t k) { return o.beta[k]; });
-              o.forward(b);
-              o.correlate_symmetric(o.K, b, KB);
-              o.quadratic_form(u, o.K, KB, W);
+              o.lps_dilatation(u,
+                               false,
+                               o.stored_mask_fields ? &o.gb : nullptr);
+              o.quadratic_form(u, o.K, W);
               for (std::size_t k = 0; k < o.N; ++k)
                 W[k] = o.beta[k] * (o.A / dim * o.theta[k] * o.theta[k] +
                                     o.B * o.minv[k] * W[k]);
@@ -480,7 +543,7 @@ namespace pdfem
       if (!o.have_omega0)
         {
           o.omega0      = o.make_kernel([](const Offset<dim> &) { return 1.; },
-                                   false,
+                                   0u,
                                    1. / o.N_global);
           o.have_omega0 = true;
         }
@@ -493,7 +556,7 @@ namespace pdfem
       o.take(count);
       if (normalisation == DamageNormalisation::body)
         {
-          o.fill([&](std::size_t k) { return o.body[k]; });
+          o.fill([&](std::size_t k) { return o.body(k); });
           o.forward(b);
           o.multiply(t, o.omega0, b, 1., false);
           o.inverse(t);
@@ -502,7 +565,7 @@ namespace pdfem
       d.resize(o.N);
       const double none = 1e-9 * o.offsets.size();
       for (std::size_t k = 0; k < o.N; ++k)
-        d[k] = o.body[k] == 0. ? 0. :
+        d[k] = o.body(k) == 0. ? 0. :
                D[k] > none     ? 1. - o.beta[k] * count[k] / D[k] :
                                  1. - o.beta[k];
     }
@@ -514,7 +577,15 @@ namespace pdfem
       if (this->material_.model != Model::lps)
         throw std::logic_error("FFT: the weighted volume is defined for LPS "
                                "only");
-      return impl->m;
+      // m = 1 / (1/m), made here only (the evaluations use 1/m)
+      Impl &o = *impl;
+      if (o.m.size() != o.N)
+        {
+          o.m.resize(o.N);
+          for (std::size_t k = 0; k < o.N; ++k)
+            o.m[k] = o.minv[k] != 0. ? 1. / o.minv[k] : 0.;
+        }
+      return o.m;
     }
 
     template <int dim>
@@ -538,8 +609,8 @@ namespace pdfem
       };
       fields(o.P);
       fields(o.q);
-      fields(o.gb);
-      fields({o.beta, o.body, o.p, o.m, o.minv, o.theta});
+      fields({o.gb, o.beta, o.body_values, o.p, o.m, o.minv, o.theta});
+      reals += double(o.body_bits.size()) / 8.;         // chi_B as bytes
       reals += double(o.real_size);                     // real buffer
       reals += 2. * double(o.spectra.size()) * o.alloc; // spectra
       reals += double(o.periodic_inverse.size());       // G^-1

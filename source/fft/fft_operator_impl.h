@@ -9,6 +9,7 @@
 
 #include <pdfem/fft/fft_operator.h>
 
+#include <algorithm>
 #include <array>
 #include <complex>
 #include <cstring>
@@ -28,13 +29,95 @@ namespace pdfem
        * A kernel's spectrum conj(k^)(kappa) times Delta V / N (the scale of
        * a correlation sum_x' k(x' - x) b(x') Delta V by an unnormalised
        * inverse FFT): real for an even kernel, i times a real number for an
-       * odd one; @p s holds that real number.
+       * odd one; @p s holds that real number on the folded modes (Fold).
+       * Bit d of @p parity is set where the kernel is odd under the
+       * reflection xi_d -> -xi_d; the kernel is odd if an odd number of
+       * bits is set.
        */
       struct Kernel
       {
         std::vector<double> s;
-        bool                odd = false;
+        unsigned int        parity = 0;
+        bool                odd    = false;
       };
+
+      /**
+       * The folded storage of the kernel spectra (and of the periodic
+       * inverse's symbol). Every kernel is even or odd under the reflection
+       * of each coordinate (xi_d -> -xi_d maps the discrete horizon onto
+       * itself, and omega depends on |xi| only), so its spectrum at the
+       * wave number k_d reflected to n_d - k_d is +-(its value at k_d):
+       * only the modes with k_d <= n_d / 2 in every direction are kept,
+       * about 1/4 of the half spectrum in 3D and 1/2 in 2D. Per direction
+       * d and local wave number (in the order of the rank's modes), the
+       * index of its folded wave number among this rank's folded ones and
+       * whether it is reflected; the folded modes are row major over the
+       * directions.
+       */
+      struct Fold
+      {
+        std::array<std::vector<std::size_t>, dim>   index;
+        std::array<std::vector<unsigned char>, dim> reflected;
+        std::array<std::size_t, dim>                stride{};
+        std::size_t                                 size = 0;
+        // the local modes: directions from the slowest to the fastest,
+        // and their local extents in that order
+        std::array<unsigned int, dim> order{};
+        std::array<std::size_t, dim>  extent{};
+      };
+
+      /// The sign of a kernel of parity @p parity at a mode whose
+      /// reflected directions are the bits of @p flips.
+      static double
+      sign(const unsigned int parity, const unsigned int flips)
+      {
+        return __builtin_parity(parity & flips) ? -1. : 1.;
+      }
+
+      /// f(m, o, flips) for the local modes m in [b, e): o the folded index
+      /// of m, flips its reflected directions (bit d for direction d).
+      template <typename F>
+      void
+      walk_modes(const std::size_t b, const std::size_t e, const F &f) const
+      {
+        const unsigned int   fast   = fold.order[dim - 1];
+        const std::size_t    length = fold.extent[dim - 1];
+        const std::size_t   *index  = fold.index[fast].data();
+        const unsigned char *refl   = fold.reflected[fast].data();
+        const std::size_t    st     = fold.stride[fast];
+        std::size_t          m      = b;
+        while (m < e)
+          {
+            // one row of the fastest direction at a time
+            std::size_t  r = m / length, kf = m % length, base = 0;
+            unsigned int flips = 0;
+            for (int p = dim - 2; p >= 0; --p)
+              {
+                const std::size_t  kp = r % fold.extent[p];
+                const unsigned int d  = fold.order[p];
+                r /= fold.extent[p];
+                base += fold.index[d][kp] * fold.stride[d];
+                flips |= unsigned(fold.reflected[d][kp]) << d;
+              }
+            const std::size_t end = std::min(e, (m / length + 1) * length);
+            for (; m < end; ++m, ++kf)
+              f(m, base + index[kf] * st, flips | (unsigned(refl[kf]) << fast));
+          }
+      }
+
+      /// walk_modes() over all local modes, split over the threads.
+      template <typename F>
+      void
+      for_modes(const F &f) const
+      {
+        internal::parallel_for(threads, Nc, [&](std::size_t b, std::size_t e) {
+          walk_modes(b, e, f);
+        });
+      }
+
+      /// The folding of this rank's modes (in the constructor).
+      void
+      make_fold();
 
       Impl(const Grid<dim>  &grid,
            const Material   &material,
@@ -173,23 +256,20 @@ namespace pdfem
                const bool          add)
       {
         const double *s = k.s.data();
-        internal::parallel_for(threads, Nc, [&](std::size_t b, std::size_t e) {
-          for (std::size_t j = b; j < e; ++j)
+        for_modes([&](std::size_t j, std::size_t o, unsigned int flips) {
+          const double f = factor * sign(k.parity, flips) * s[o];
+          // odd: i f (a + i b) = -f b + i f a
+          const double re = k.odd ? -f * in[j][1] : f * in[j][0];
+          const double im = k.odd ? f * in[j][0] : f * in[j][1];
+          if (add)
             {
-              const double f = factor * s[j];
-              // odd: i f (a + i b) = -f b + i f a
-              const double re = k.odd ? -f * in[j][1] : f * in[j][0];
-              const double im = k.odd ? f * in[j][0] : f * in[j][1];
-              if (add)
-                {
-                  out[j][0] += re;
-                  out[j][1] += im;
-                }
-              else
-                {
-                  out[j][0] = re;
-                  out[j][1] = im;
-                }
+              out[j][0] += re;
+              out[j][1] += im;
+            }
+          else
+            {
+              out[j][0] = re;
+              out[j][1] = im;
             }
         });
       }
@@ -213,79 +293,152 @@ namespace pdfem
                     const double               gf,
                     fftw_complex              *gsum)
       {
-        internal::parallel_for(threads, Nc, [&](std::size_t b, std::size_t e) {
-          for (std::size_t m = b; m < e; ++m)
+        for_modes([&](std::size_t m, std::size_t o, unsigned int flips) {
+          // the sign of a reflected direction d: K_ij flips with d = i or
+          // d = j (not both), g_i with d = i
+          double sigma[dim];
+          for (unsigned int d = 0; d < dim; ++d)
+            sigma[d] = (flips >> d) & 1u ? -1. : 1.;
+          double x[dim][2];
+          for (unsigned int j = 0; j < dim; ++j)
             {
-              double x[dim][2];
+              x[j][0] = h[j][m][0];
+              x[j][1] = h[j][m][1];
+            }
+          if (gsum != nullptr)
+            {
+              // i t (a + i b) = -t b + i t a
+              double re = 0., im = 0.;
               for (unsigned int j = 0; j < dim; ++j)
                 {
-                  x[j][0] = h[j][m][0];
-                  x[j][1] = h[j][m][1];
+                  const double t = sigma[j] * (*g)[j].s[o];
+                  re -= t * x[j][1];
+                  im += t * x[j][0];
                 }
-              if (gsum != nullptr)
+              gsum[m][0] = re;
+              gsum[m][1] = im;
+            }
+          if (K == nullptr)
+            return;
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              double re = 0., im = 0.;
+              for (unsigned int j = 0; j < dim; ++j)
                 {
-                  // i t (a + i b) = -t b + i t a
-                  double re = 0., im = 0.;
-                  for (unsigned int j = 0; j < dim; ++j)
-                    {
-                      const double t = (*g)[j].s[m];
-                      re -= t * x[j][1];
-                      im += t * x[j][0];
-                    }
-                  gsum[m][0] = re;
-                  gsum[m][1] = im;
+                  const double k =
+                    sigma[i] * sigma[j] *
+                    (*K)[internal::symmetric_index<dim>(i, j)].s[o];
+                  re += k * x[j][0];
+                  im += k * x[j][1];
                 }
-              if (K == nullptr)
-                continue;
-              for (unsigned int i = 0; i < dim; ++i)
+              re *= kf;
+              im *= kf;
+              if (hg != nullptr)
                 {
-                  double re = 0., im = 0.;
-                  for (unsigned int j = 0; j < dim; ++j)
-                    {
-                      const double k =
-                        (*K)[internal::symmetric_index<dim>(i, j)].s[m];
-                      re += k * x[j][0];
-                      im += k * x[j][1];
-                    }
-                  re *= kf;
-                  im *= kf;
-                  if (hg != nullptr)
-                    {
-                      const double t = gf * (*g)[i].s[m];
-                      re -= t * hg[m][1];
-                      im += t * hg[m][0];
-                    }
-                  h[i][m][0] = re;
-                  h[i][m][1] = im;
+                  const double t = gf * sigma[i] * (*g)[i].s[o];
+                  re -= t * hg[m][1];
+                  im += t * hg[m][0];
                 }
+              h[i][m][0] = re;
+              h[i][m][1] = im;
             }
         });
       }
 
       /// The spectrum of a kernel sampled on the horizon's bonds, times
-      /// @p scale.
+      /// @p scale, on the folded modes (@p parity as in Kernel).
       template <typename F>
       Kernel
-      make_kernel(const F &value, const bool odd, const double scale);
+      make_kernel(const F &value, unsigned int parity, double scale);
 
       /// The kernels of the model (and the influence counts for damage).
       void
       make_kernels();
 
-      /// [k_s beta_field] for the symmetric kernels @p K into @p out, with
-      /// the spectrum @p b of the field.
+      /**
+       * f(s, k, c_s(k)) for every kernel s of @p kernels and local node k,
+       * c_s = [k_s w] the correlation of the kernel with the field w(k) =
+       * @p weight(k): one forward and kernels.size() inverse transforms,
+       * spectra @p work and @p work + 1 overwritten. For one s the calls
+       * come from several threads (disjoint k).
+       */
+      template <typename W, typename F>
       void
-      correlate_symmetric(const std::vector<Kernel>        &K,
-                          const fftw_complex               *b,
-                          std::vector<std::vector<double>> &out);
+      for_correlations(const std::vector<Kernel> &kernels,
+                       const W                   &weight,
+                       const unsigned int         work,
+                       const F                   &f)
+      {
+        fftw_complex *w = spectrum(work), *t = spectrum(work + 1);
+        fill(weight);
+        forward(w);
+        for (unsigned int s = 0; s < kernels.size(); ++s)
+          {
+            multiply(t, kernels[s], w, 1., false);
+            inverse(t);
+            use([&](std::size_t k, double r) { f(s, k, r); });
+          }
+      }
 
-      /// Q(x) = sum' beta' K_ij eta_i eta_j Delta V (no outer beta), with
-      /// KB_s = [K_s beta].
+      /**
+       * f(s, k, v) with v summing to P_s(k) over the calls (s the
+       * symmetric index of (i, j)): P_s = [C_s beta] (bond based) or
+       * (1/m) [K_s beta] + [K_s (beta/m)] (LPS). Stored fields (set_masks)
+       * or, with FftOptions::keep_mask_fields false, recomputed: bond
+       * based one forward and n_sym inverse transforms, LPS twice that;
+       * spectra 0 and 1 are overwritten.
+       */
+      template <typename F>
       void
-      quadratic_form(const std::vector<double>              &u,
-                     const std::vector<Kernel>              &K,
-                     const std::vector<std::vector<double>> &KB,
-                     std::vector<double>                    &Q);
+      for_P(const F &f)
+      {
+        if (stored_mask_fields)
+          {
+            for (unsigned int s = 0; s < P.size(); ++s)
+              for_nodes([&](std::size_t k, std::size_t) { f(s, k, P[s][k]); });
+            return;
+          }
+        const auto b = [this](std::size_t k) { return beta[k]; };
+        if (material.model != Model::lps)
+          {
+            for_correlations(C, b, 0, f);
+            return;
+          }
+        for_correlations(K, b, 0, [&](unsigned int s, std::size_t k, double r) {
+          f(s, k, minv[k] * r);
+        });
+        for_correlations(
+          K, [this](std::size_t k) { return beta[k] * minv[k]; }, 0, f);
+      }
+
+      /// L_i -= factor sum_j u_j P_ij for every node (P from for_P();
+      /// spectra 0 and 1 overwritten where recomputed).
+      void
+      subtract_P_term(const std::vector<double> &u,
+                      double                     factor,
+                      std::vector<double>       &L);
+
+      /// f(i, k, [g_i beta](k)) of LPS: the stored fields or recomputed
+      /// (one forward, dim inverse transforms, spectra 0 and 1 overwritten).
+      template <typename F>
+      void
+      for_gb(const F &f)
+      {
+        if (stored_mask_fields)
+          for (unsigned int i = 0; i < dim; ++i)
+            for_nodes(
+              [&](std::size_t k, std::size_t) { f(i, k, gb[i * N + k]); });
+        else
+          for_correlations(
+            g, [this](std::size_t k) { return beta[k]; }, 0, f);
+      }
+
+      /// Q(x) = sum' beta' K_ij eta_i eta_j Delta V (no outer beta); K = C
+      /// (bond based) or K (LPS).
+      void
+      quadratic_form(const std::vector<double> &u,
+                     const std::vector<Kernel> &K,
+                     std::vector<double>       &Q);
 
       void
       apply_linear(const std::vector<double> &u, std::vector<double> &L);
@@ -296,10 +449,23 @@ namespace pdfem
       void
       apply_lps(const std::vector<double> &u, std::vector<double> &L);
 
-      /// theta of LPS; leaves Sum_j K_ij^ (beta u_j)^ in spectra 0..dim-1
-      /// when @p keep_sums.
+      /**
+       * theta of LPS, with gb_i = [g_i beta] from @p gb_fields (dim N
+       * values, component-major) or, where null, from for_gb(); leaves
+       * Sum_j K_ij^
+       * (beta u_j)^ in spectra 0..dim-1 when @p keep_sums.
+       */
       void
-      lps_dilatation(const std::vector<double> &u, bool keep_sums);
+      lps_dilatation(const std::vector<double> &u,
+                     bool                       keep_sums,
+                     const std::vector<double> *gb_fields);
+
+      /// chi_B(k).
+      double
+      body(const std::size_t k) const
+      {
+        return body_values.empty() ? double(body_bits[k]) : body_values[k];
+      }
 
       Grid<dim> const    grid;
       Material const     material;
@@ -333,19 +499,30 @@ namespace pdfem
       Kernel              c, omega0;
       bool                have_omega0 = false;
 
-      // mask fields: beta = chi_B lambda, chi_B; P_s = [C_s beta] (bond
-      // based) or (1/m) [K_s beta] + [K_s (beta/m)] (LPS); q_i = [a_i beta],
-      // p = [c beta]; LPS: m, 1/m (0 outside), gb_i = [g_i beta], theta.
-      std::vector<double>              beta, body;
-      std::vector<std::vector<double>> P, q, gb;
-      std::vector<double>              p, m, minv, theta;
+      // mask fields: beta = chi_B lambda; chi_B as bytes where every value
+      // is 0 or 1, else as doubles; P_s = [C_s beta] (bond based) or
+      // (1/m) [K_s beta] + [K_s (beta/m)] (LPS), q_i = [a_i beta],
+      // p = [c beta] (nonlinear); LPS: 1/m (0 where m = 0),
+      // gb_i = [g_i beta], theta. P and gb are empty where recomputed
+      // (keep_mask_fields false; the nonlinear model keeps its fields);
+      // m is made by weighted_volume() only.
+      // (stored_mask_fields: kept and made; a flag, not the sizes, so that
+      // ranks without nodes take the same transforms)
+      bool                             keep_mask_fields   = true;
+      bool                             stored_mask_fields = false;
+      std::vector<double>              beta, body_values;
+      std::vector<unsigned char>       body_bits;
+      std::vector<std::vector<double>> P, q;
+      std::vector<double>              gb, p, minv, theta;
+      mutable std::vector<double>      m;
       double                           A = 0., B = 0.;
+      Fold                             fold;
 
       // apply_periodic_inverse(): G^(kappa)^-1, real and symmetric, its
-      // dim (dim + 1) / 2 entries per mode (the diagonal, then the upper
-      // triangle), made at the first use (a rank may hold no mode: the
-      // flag, not the size, says whether it is made, so that all ranks
-      // agree).
+      // dim (dim + 1) / 2 entries per folded mode (the diagonal, then the
+      // upper triangle; entry (i, j) has the parity of K_ij), made at the first
+      // use (a rank may hold no mode: the flag, not the size, says whether it
+      // is made, so that all ranks agree).
       std::vector<double> periodic_inverse;
       bool                have_periodic_inverse = false;
     };

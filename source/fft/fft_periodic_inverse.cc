@@ -99,9 +99,12 @@ namespace pdfem
           // stencil is even (xi and -xi carry the same coefficients), so
           // G^ is real and symmetric: its upper triangle's real parts are
           // kept (the imaginary parts and the asymmetry are round-off).
-          const std::vector<double> beta = o.beta, body = o.body;
+          const std::vector<double> beta = o.beta;
+          std::vector<double>       body(o.N);
+          for (std::size_t k = 0; k < o.N; ++k)
+            body[k] = o.body(k);
           set_masks(std::vector<double>(o.N, 1.), std::vector<double>(o.N, 1.));
-          o.periodic_inverse.assign(np * o.Nc, 0.);
+          o.periodic_inverse.assign(np * o.fold.size, 0.);
           std::vector<double> impulse(dim * o.N, 0.), L;
           const bool          origin = o.slab.contains(0);
           for (unsigned int j = 0; j < dim; ++j)
@@ -116,8 +119,16 @@ namespace pdfem
                   o.fill([&](std::size_t k) { return -L[i * o.N + k]; });
                   fftw_complex *s = o.spectrum(i);
                   o.forward(s);
-                  for (std::size_t m = 0; m < o.Nc; ++m)
-                    o.periodic_inverse[m * np + packed<dim>(i, j)] = s[m][0];
+                  // on the folded modes: entry (i, j) has the parity of
+                  // K_ij (one thread: the same value is always kept)
+                  const unsigned int parity = (1u << i) ^ (1u << j);
+                  o.walk_modes(
+                    0,
+                    o.Nc,
+                    [&](std::size_t m, std::size_t f, unsigned int flips) {
+                      o.periodic_inverse[f * np + packed<dim>(i, j)] =
+                        Impl::sign(parity, flips) * s[m][0];
+                    });
                 }
             }
           set_masks(body, beta); // beta = chi_B lambda: the same masks
@@ -125,21 +136,31 @@ namespace pdfem
           // the mean eigenvalue of the mode (0, ..., 0, 1) (index 1 of the
           // last direction), the softest the box can resolve; its rank
           // sends s to all (the others add 0).
+          // (both modes are their own folded modes, k_d <= n_d / 2)
+          const auto folded = [&o](const std::array<std::size_t, dim> &k) {
+            const std::ptrdiff_t m = o.local_mode(k);
+            std::ptrdiff_t       f = -1;
+            if (m >= 0)
+              o.walk_modes(m, m + 1, [&](std::size_t, std::size_t i, unsigned) {
+                f = static_cast<std::ptrdiff_t>(i);
+              });
+            return f;
+          };
           std::array<std::size_t, dim> k{};
           k[dim - 1]              = 1;
-          const std::ptrdiff_t m1 = o.local_mode(k);
+          const std::ptrdiff_t m1 = folded(k);
           double               s  = 0.;
           if (m1 >= 0)
             for (unsigned int i = 0; i < dim; ++i)
               s += o.periodic_inverse[m1 * np + i] / dim;
           s                       = o.sum_over_ranks(s);
           k[dim - 1]              = 0;
-          const std::ptrdiff_t m0 = o.local_mode(k);
+          const std::ptrdiff_t m0 = folded(k);
           if (m0 >= 0)
             for (unsigned int i = 0; i < np; ++i)
               o.periodic_inverse[m0 * np + i] = i < dim ? s : 0.;
           internal::parallel_for(
-            o.threads, o.Nc, [&](std::size_t b, std::size_t e) {
+            o.threads, o.fold.size, [&](std::size_t b, std::size_t e) {
               for (std::size_t m = b; m < e; ++m)
                 {
                   double *a = &o.periodic_inverse[m * np];
@@ -159,26 +180,24 @@ namespace pdfem
           o.forward(h[j]);
         }
       const double scale = 1. / o.N_global; // FFTW's transforms: unnormalised
-      internal::parallel_for(o.threads,
-                             o.Nc,
-                             [&](std::size_t b, std::size_t e) {
-                               for (std::size_t m = b; m < e; ++m)
-                                 {
-                                   const double *a =
-                                     &o.periodic_inverse[m * np];
-                                   Complex x[dim];
-                                   for (unsigned int j = 0; j < dim; ++j)
-                                     x[j] = Complex(h[j][m][0], h[j][m][1]);
-                                   for (unsigned int i = 0; i < dim; ++i)
-                                     {
-                                       Complex y = 0.;
-                                       for (unsigned int j = 0; j < dim; ++j)
-                                         y += a[packed<dim>(i, j)] * x[j];
-                                       h[i][m][0] = scale * y.real();
-                                       h[i][m][1] = scale * y.imag();
-                                     }
-                                 }
-                             });
+      o.for_modes([&](std::size_t m, std::size_t f, unsigned int flips) {
+        const double *a = &o.periodic_inverse[f * np];
+        // at a reflected mode the inverse is S G^-1 S, S = diag(sigma)
+        double sigma[dim];
+        for (unsigned int d = 0; d < dim; ++d)
+          sigma[d] = (flips >> d) & 1u ? -1. : 1.;
+        Complex x[dim];
+        for (unsigned int j = 0; j < dim; ++j)
+          x[j] = sigma[j] * Complex(h[j][m][0], h[j][m][1]);
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            Complex y = 0.;
+            for (unsigned int j = 0; j < dim; ++j)
+              y += a[packed<dim>(i, j)] * x[j];
+            h[i][m][0] = scale * sigma[i] * y.real();
+            h[i][m][1] = scale * sigma[i] * y.imag();
+          }
+      });
       z.resize(dim * o.N);
       for (unsigned int i = 0; i < dim; ++i)
         {

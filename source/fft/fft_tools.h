@@ -81,6 +81,17 @@ namespace pdfem
         // 22 5.
         return a * dim - a * (a - 1) / 2 + (b - a);
       }
+
+      /// The pair (i, j), i <= j, of the symmetric index @p s.
+      template <int dim>
+      inline void
+      symmetric_pair(const unsigned int s, unsigned int &i, unsigned int &j)
+      {
+        for (i = 0; i < dim; ++i)
+          for (j = i; j < dim; ++j)
+            if (symmetric_index<dim>(i, j) == s)
+              return;
+      }
     } // namespace internal
   }   // namespace FFT
 } // namespace pdfem

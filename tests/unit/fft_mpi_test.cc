@@ -120,15 +120,17 @@ namespace
   compare(const Grid<dim>   &g,
           const Material    &mat,
           const unsigned int threads,
-          const bool         check_memory)
+          const bool         check_memory,
+          const bool         keep_mask_fields = true)
   {
     const double tol  = 1e-12;
     const auto   name = std::to_string(dim) + "D " + model_name(mat.model) +
                       " on " + std::to_string(n_ranks()) + " ranks";
     SCOPED_TRACE(name);
     FftOptions distributed;
-    distributed.communicator = MPI_COMM_WORLD;
-    distributed.threads      = threads;
+    distributed.communicator     = MPI_COMM_WORLD;
+    distributed.threads          = threads;
+    distributed.keep_mask_fields = keep_mask_fields;
     FftOperator<dim>  reference(g, mat), op(g, mat, distributed);
     const Slab        slab = op.slab();
     const std::size_t N    = g.n_nodes();
@@ -275,6 +277,28 @@ TEST(FftMpi, Threads3D)
           material(Model::lps, 2.55),
           2,
           true);
+}
+
+// The lean setting (the mask fields recomputed in each evaluation) against
+// the one-rank operator that keeps them, on the grids above: ranks without
+// planes or modes take the same transforms.
+TEST(FftMpi, RecomputedMaskFields)
+{
+  for (const Model model : {Model::linear_bond_based, Model::lps})
+    {
+      compare(grid<3>({{13, 10, 14}}, {{1., 0.9, 0.8}}),
+              material(model, 2.55),
+              2,
+              false,
+              false);
+      compare(
+        grid<2>({{15, 3}}, {{0.5, 1.}}), material(model, 1.2), 1, false, false);
+      compare(grid<3>({{3, 10, 12}}, {{1., 0.9, 0.8}}),
+              material(model, 1.3),
+              1,
+              false,
+              false);
+    }
 }
 
 // 3 x 10 x 12 planes: with 4 ranks the last holds no plane (FFTW's blocks

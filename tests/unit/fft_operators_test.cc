@@ -105,11 +105,13 @@ namespace
   /// random field.
   template <int dim>
   void
-  compare_forces(const Model model, const Masks with_masks)
+  compare_forces(const Model       model,
+                 const Masks       with_masks,
+                 const FftOptions &options = FftOptions(),
+                 const Grid<dim>  &g       = small_grid<dim>())
   {
-    const Grid<dim>     g   = small_grid<dim>();
     const Material      mat = material<dim>(model);
-    FftOperator<dim>    fft(g, mat);
+    FftOperator<dim>    fft(g, mat, options);
     DirectOperator<dim> direct(g, mat);
     std::vector<double> body, integrity;
     if (with_masks == Masks::body_and_damage)
@@ -165,11 +167,12 @@ namespace
 
   template <int dim>
   void
-  compare_energy_and_damage(const Model model)
+  compare_energy_and_damage(const Model       model,
+                            const FftOptions &options = FftOptions(),
+                            const Grid<dim>  &g       = small_grid<dim>())
   {
-    const Grid<dim>     g   = small_grid<dim>();
     const Material      mat = material<dim>(model);
-    FftOperator<dim>    fft(g, mat);
+    FftOperator<dim>    fft(g, mat, options);
     DirectOperator<dim> direct(g, mat);
     std::vector<double> body, integrity;
     masks(g, mat.horizon, body, integrity);
@@ -198,6 +201,73 @@ namespace
     compare_energy_and_damage<3>(Model::lps);
   }
 
+  /// The lean setting: the mask fields recomputed in every evaluation.
+  FftOptions
+  lean()
+  {
+    FftOptions o;
+    o.keep_mask_fields = false;
+    return o;
+  }
+
+  TEST(FftOperators, RecomputedMaskFieldsEqualDirectSum)
+  {
+    // Also on grids of odd sizes (no Nyquist mode; the folded kernel
+    // spectra hold k_d <= (n_d - 1) / 2) with both settings.
+    Grid<2> odd2 = small_grid<2>();
+    odd2.n       = {{23, 19}};
+    Grid<3> odd3 = small_grid<3>();
+    odd3.n       = {{11, 9, 13}};
+    for (const Model model : {Model::linear_bond_based, Model::lps})
+      {
+        SCOPED_TRACE(model_name(model));
+        for (const Masks m : {Masks::none, Masks::body_and_damage})
+          {
+            compare_forces<2>(model, m, lean());
+            compare_forces<3>(model, m, lean());
+            compare_forces<2>(model, m, lean(), odd2);
+            compare_forces<3>(model, m, lean(), odd3);
+            compare_forces<3>(model, m, FftOptions(), odd3);
+          }
+        compare_energy_and_damage<2>(model, lean());
+        compare_energy_and_damage<3>(model, lean());
+        compare_energy_and_damage<3>(model, lean(), odd3);
+      }
+    compare_forces<3>(Model::nonlinear_bond_based,
+                      Masks::body_and_damage,
+                      FftOptions(),
+                      odd3);
+  }
+
+  TEST(FftOperators, BytesCountTheFoldedKernelsAndTheKeptFields)
+  {
+    // 3D linear bond based on 16 x 12 x 10 nodes after one evaluation:
+    // 6 kernel spectra on the (8 + 1)(6 + 1)(5 + 1) folded modes; beta
+    // and, kept, the 6 fields P_ij; chi_B as bytes; the real work array;
+    // 3 work half-spectra of 16 x 12 x 6 complex numbers.
+    Grid<3> g;
+    g.n                        = {{16, 12, 10}};
+    g.spacing                  = {{1., 1., 1.}};
+    const double        N      = double(g.n_nodes());
+    const double        folded = 9. * 7. * 6., half = 16. * 12. * 6.;
+    std::vector<double> body, integrity, L;
+    masks(g, 2.55, body, integrity);
+    const std::vector<double> u = random_field(3 * g.n_nodes(), 0.3, 2);
+    const auto bytes = [&](const Model model, const FftOptions &options) {
+      FftOperator<3> op(g, material<3>(model), options);
+      op.set_masks(body, integrity);
+      op.apply(u, L);
+      return op.bytes();
+    };
+    const double kept =
+      8. * (6. * folded + N * (1. + 6.) + N / 8. + N + 3. * 2. * half);
+    EXPECT_EQ(bytes(Model::linear_bond_based, FftOptions()), kept);
+    EXPECT_EQ(bytes(Model::linear_bond_based, lean()), kept - 8. * 6. * N);
+    // LPS: recomputing drops P_ij (6 fields) and [g_i beta] (3)
+    EXPECT_EQ(bytes(Model::lps, FftOptions()) - bytes(Model::lps, lean()),
+              8. * 9. * N);
+  }
+
   TEST(FftOperators, RepeatedEvaluationsAreIdentical)
   {
     // The same plans, kernel spectra and work spectra serve every
@@ -205,24 +275,25 @@ namespace
     const Grid<3> g = small_grid<3>();
     for (const Model model :
          {Model::linear_bond_based, Model::nonlinear_bond_based, Model::lps})
-      {
-        FftOperator<3>      fft(g, material<3>(model));
-        std::vector<double> body, integrity;
-        masks(g, 2.55, body, integrity);
-        fft.set_masks(body, integrity);
-        const std::vector<double> u1 = random_field(3 * g.n_nodes(), 0.3, 1);
-        const std::vector<double> u2 = random_field(3 * g.n_nodes(), 0.5, 2);
-        std::vector<double>       first, other, again;
-        fft.apply(u1, first);
-        const std::size_t transforms = fft.n_transforms();
-        fft.apply(u2, other);
-        fft.set_masks({}, {});
-        fft.apply(u2, other);
-        fft.set_masks(body, integrity);
-        fft.apply(u1, again);
-        EXPECT_EQ(first, again) << model_name(model);
-        EXPECT_GT(fft.n_transforms(), transforms);
-      }
+      for (const FftOptions &options : {FftOptions(), lean()})
+        {
+          FftOperator<3>      fft(g, material<3>(model), options);
+          std::vector<double> body, integrity;
+          masks(g, 2.55, body, integrity);
+          fft.set_masks(body, integrity);
+          const std::vector<double> u1 = random_field(3 * g.n_nodes(), 0.3, 1);
+          const std::vector<double> u2 = random_field(3 * g.n_nodes(), 0.5, 2);
+          std::vector<double>       first, other, again;
+          fft.apply(u1, first);
+          const std::size_t transforms = fft.n_transforms();
+          fft.apply(u2, other);
+          fft.set_masks({}, {});
+          fft.apply(u2, other);
+          fft.set_masks(body, integrity);
+          fft.apply(u1, again);
+          EXPECT_EQ(first, again) << model_name(model);
+          EXPECT_GT(fft.n_transforms(), transforms);
+        }
   }
 
   TEST(FftOperators, TwoThreadsAgreeWithOne)
@@ -238,8 +309,8 @@ namespace
     for (const Model model :
          {Model::linear_bond_based, Model::nonlinear_bond_based, Model::lps})
       {
-        FftOptions two;
-        two.threads = 2;
+        FftOptions two = lean();
+        two.threads    = 2;
         FftOperator<2> one_thread(g, material<2>(model));
         FftOperator<2> two_threads(g, material<2>(model), two);
         one_thread.set_masks(body, integrity);

@@ -10,6 +10,8 @@
 // on min(N, 2^direct_log2) nodes and scaled to N; the columns say on how
 // many nodes it ran. Times are the best of the repetitions made within
 // --seconds (at least one), after one untimed evaluation for the FFT.
+// --lean: the FFT operator recomputes its mask fields in every evaluation
+// (FftOptions::keep_mask_fields = false; column mask_fields).
 //
 // Under mpirun the FFT operator is distributed over the ranks (slabs of
 // whole planes, FftOptions::communicator = MPI_COMM_WORLD): each rank holds
@@ -49,6 +51,7 @@ namespace
     Planning                  planning    = Planning::measure;
     bool                      header      = false;
     bool                      skip_direct = false;
+    bool                      lean        = false;
     int                       ranks       = 1;
     int                       rank        = 0;
   };
@@ -73,7 +76,7 @@ namespace
       << "usage: pdfem_fft_benchmark --dim 2|3 --model linear|nonlinear|lps\n"
       << "         --log2n K1,K2,... --m M1,M2,... [--threads T]\n"
       << "         [--direct-log2 K] [--no-direct] [--seconds S]\n"
-      << "         [--planning measure|estimate] [--header]\n"
+      << "         [--planning measure|estimate] [--lean] [--header]\n"
       << "       (under mpirun -np P: the FFT operator on P ranks)\n";
     std::exit(2);
   }
@@ -121,6 +124,8 @@ namespace
             value() == "estimate" ? Planning::estimate : Planning::measure;
         else if (key == "--header")
           o.header = true;
+        else if (key == "--lean")
+          o.lean = true;
         else
           usage("unknown option " + key);
       }
@@ -226,9 +231,10 @@ namespace
           integrity.clear();
 
           FftOptions options;
-          options.threads      = o.threads;
-          options.planning     = o.planning;
-          options.communicator = MPI_COMM_WORLD;
+          options.threads          = o.threads;
+          options.planning         = o.planning;
+          options.communicator     = MPI_COMM_WORLD;
+          options.keep_mask_fields = !o.lean;
           MPI_Barrier(MPI_COMM_WORLD);
           double           t0 = now();
           FftOperator<dim> fft(g, mat, options);
@@ -296,7 +302,7 @@ namespace
           if (o.rank != 0)
             continue;
           std::printf("%d,%s,%g,%u,%zu,%s,%zu,%.6e,%.3f,%zu,%.6e,%zu,%.3f,%.1f,"
-                      "%.0f,%u,%d,%.0f\n",
+                      "%.0f,%u,%d,%.0f,%s\n",
                       dim,
                       model_name(o.model).c_str(),
                       m,
@@ -314,7 +320,8 @@ namespace
                       minimum,
                       o.threads,
                       o.ranks,
-                      bytes_per_rank);
+                      bytes_per_rank,
+                      o.lean ? "recomputed" : "kept");
           std::fflush(stdout);
         }
   }
@@ -329,7 +336,7 @@ main(int argc, char **argv)
     std::printf("dim,model,m,log2n,nodes,grid,bonds,fft_seconds,fft_setup_"
                 "seconds,transforms,direct_seconds,direct_nodes,speedup,fft_"
                 "bytes_per_node,min_bytes_per_node,threads,ranks,fft_bytes_"
-                "per_rank\n");
+                "per_rank,mask_fields\n");
   if (o.dim == 2)
     run<2>(o);
   else

@@ -8,7 +8,8 @@
 # per node does not depend on N: the bonds are grid offsets); one full-size direct run per dimension
 # checks that scaling. Extra rows: the crossover (m = 1, 1.5, 2), two threads and two MPI ranks at 3D,
 # N = 2^21.
-# Writes doc/benchmarks/fft.csv (the sweep), fft_extra.csv (check, crossover, threads) and, when
+# Writes doc/benchmarks/fft.csv (the sweep), fft_extra.csv (check, crossover, threads),
+# fft_memory.csv (bytes per node and time, mask fields kept and recomputed) and, when
 # pdfem-plot is built, the charts fft_time_3d.png, fft_time_2d.png, fft_speedup.png and
 # fft_crossover.png.
 #
@@ -20,7 +21,24 @@ bench="$build/bin/pdfem_fft_benchmark"
 s=${SECONDS_PER_POINT:-0.3}
 csv="$out/fft.csv"
 extra="$out/fft_extra.csv"
+memory="$out/fft_memory.csv"
 ms=3,4,5,6,8,10
+
+# Memory against time (fft_memory.csv): each model with its mask fields kept and recomputed
+# (--lean, FftOptions::keep_mask_fields = false), m = 5, 3D N = 2^21 and 2D N = 2^22, the runs of
+# one size alternated. MEMORY_ONLY=1 writes this table only.
+{
+  "$bench" --header --dim 3 --model linear --log2n 15 --m 5 --seconds 0 --no-direct | head -n 1
+  for dim in 3 2; do
+    if [ "$dim" = 3 ]; then k=21; d=15; else k=22; d=16; fi
+    for model in linear lps nonlinear; do
+      "$bench" --dim $dim --model $model --log2n $k --m 5 --direct-log2 $d --seconds "$s"
+      [ "$model" = nonlinear ] ||
+        "$bench" --dim $dim --model $model --log2n $k --m 5 --direct-log2 $d --seconds "$s" --lean
+    done
+  done
+} | tee "$memory"
+[ "${MEMORY_ONLY:-0}" = 1 ] && exit 0
 
 "$bench" --header --dim 3 --model linear --log2n 15,16,17,18,19,20,21 --m $ms --seconds "$s" | tee "$csv"
 "$bench" --dim 3 --model lps --log2n 15,16,17,18,19,20,21 --m $ms --seconds "$s" | tee -a "$csv"

@@ -40,6 +40,19 @@ namespace pdfem
        * in the same order); the accessors are not.
        */
       MPI_Comm communicator = MPI_COMM_SELF;
+      /**
+       * Whether the fields that depend on the masks only are kept from
+       * set_masks() to the evaluations (true) or recomputed in each
+       * (false, the lean setting; theory.md §14.3). Kept: P_ij = [C_ij beta]
+       * of the linear bond-based model (dim (dim + 1) / 2 fields, 48 bytes
+       * per node in 3D), and of LPS [g_i beta] (dim fields) with the
+       * combined (1/m) [K_ij beta] + [K_ij (beta/m)] (72 bytes per node in
+       * 3D). Recomputing takes per force evaluation in 3D 13 transforms
+       * instead of 6 (linear bond based) and 32 instead of 14 (LPS); the
+       * results are the same to round-off. The nonlinear bond-based model
+       * keeps its fields either way.
+       */
+      bool keep_mask_fields = true;
     };
 
     /**
@@ -60,7 +73,9 @@ namespace pdfem
      * 1/m), k a kernel of xi, and each convolution is evaluated as a
      * circular convolution by real-to-complex FFTs (FFTW). Kernels are
      * transformed once (their spectra are real for even kernels and
-     * imaginary for odd ones, so one real number per mode is kept), the two
+     * imaginary for odd ones, so one real number per mode is kept, and only
+     * on the modes with k_d <= n_d / 2: each kernel is even or odd in
+     * every direction, theory.md §14.3), the two
      * plans (r2c and c2r) are made once and reused for every transform,
      * and sums over a kernel index are taken in Fourier space so that one
      * inverse transform serves a whole sum.

@@ -316,8 +316,10 @@ namespace pdfem
       bool        inverse_distance = true;
       double      dirichlet_layer  = 1.;
       double      traction_layer   = 0.;
-      double      delta = 0., A = 0., B = 0., bulk_modulus = 0.;
-      double      node_volume = 0.;
+      /// LPS fft/Keep mask fields (FFT::FftOptions::keep_mask_fields).
+      bool   keep_mask_fields = true;
+      double delta = 0., A = 0., B = 0., bulk_modulus = 0.;
+      double node_volume = 0.;
       /// LPS fft/Damage = energy, G_0 and W_c = G_0 / delta.
       bool                     damage_on       = false;
       double                   fracture_energy = 0., W_c = 0.;
