@@ -46,13 +46,8 @@ namespace pdfem
           subtract_P_term(u, 1., L);
         }
       fftw_complex *h[dim];
-      for (unsigned int j = 0; j < dim; ++j)
-        {
-          h[j]             = spectrum(j);
-          const double *uj = u.data() + j * N;
-          fill([&](std::size_t k) { return beta[k] * uj[k]; });
-          forward(h[j]);
-        }
+      forward_components(
+        u, [this](std::size_t k) { return beta[k]; }, h);
       fused_product(h, &C, 1., nullptr, nullptr, 0., nullptr);
       for (unsigned int i = 0; i < dim; ++i)
         {
@@ -100,13 +95,8 @@ namespace pdfem
       inverse(q);
       take(Q);
       fftw_complex *S[dim];
-      for (unsigned int i = 0; i < dim; ++i)
-        {
-          S[i]             = spectrum(i);
-          const double *ui = u.data() + i * N;
-          fill([&](std::size_t k) { return beta[k] * ui[k]; });
-          forward(S[i]);
-        }
+      forward_components(
+        u, [this](std::size_t k) { return beta[k]; }, S);
       fused_product(S, &kernels, 1., nullptr, nullptr, 0., nullptr);
       for (unsigned int j = 0; j < dim; ++j)
         {
@@ -258,13 +248,8 @@ namespace pdfem
           });
         }
       fftw_complex *acc = spectrum(dim), *h[dim];
-      for (unsigned int j = 0; j < dim; ++j)
-        {
-          h[j]             = spectrum(j);
-          const double *uj = u.data() + j * N;
-          fill([&](std::size_t k) { return beta[k] * uj[k]; });
-          forward(h[j]);
-        }
+      forward_components(
+        u, [this](std::size_t k) { return beta[k]; }, h);
       // acc = sum_j g_j (beta u_j)^; with keep_sums h[i] <- sum_j K_ij h[j]
       fused_product(h, keep_sums ? &K : nullptr, 1., &g, nullptr, 0., acc);
       inverse(acc);
@@ -293,25 +278,20 @@ namespace pdfem
       if (!stored)
         for_gb(
           [&](unsigned int i, std::size_t k, double r) { L[i * N + k] = r; });
-      const double *gbf = stored ? gb.data() : L.data();
-      lps_dilatation(u, true, stored ? &gb : &L);
+      const std::vector<double> &gb_fields = stored ? gb : L;
+      lps_dilatation(u, true, &gb_fields);
       for (unsigned int i = 0; i < dim; ++i)
         {
           inverse(spectrum(i));
           double       *Li = L.data() + i * N;
-          const double *gi = gbf + i * N;
+          const double *gi = gb_fields.data() + i * N;
           use([&](std::size_t k, double r) {
             Li[k] = minv[k] * (A * theta[k] * gi[k] + B * r);
           });
         }
       fftw_complex *h[dim], *ht = spectrum(dim);
-      for (unsigned int j = 0; j < dim; ++j)
-        {
-          h[j]             = spectrum(j);
-          const double *uj = u.data() + j * N;
-          fill([&](std::size_t k) { return beta[k] * minv[k] * uj[k]; });
-          forward(h[j]);
-        }
+      forward_components(
+        u, [this](std::size_t k) { return beta[k] * minv[k]; }, h);
       fill([&](std::size_t k) { return beta[k] * minv[k] * theta[k]; });
       forward(ht);
       fused_product(h, &K, B, &g, ht, A, nullptr);

@@ -226,14 +226,13 @@ namespace pdfem
               distinct.begin();
           folded_extent[d] = distinct.size();
         }
+      // (0 on a rank without modes: its k_1 extent is 0)
       fold.size = 1;
       for (int d = dim - 1; d >= 0; --d)
         {
           fold.stride[d] = fold.size;
           fold.size *= folded_extent[d];
         }
-      if (Nc == 0)
-        fold.size = 0;
     }
 
     template <int dim>
@@ -286,13 +285,12 @@ namespace pdfem
       forward(s);
       Kernel k;
       k.parity = parity;
-      k.odd    = __builtin_parity(parity);
       k.s.assign(fold.size, 0.);
       // conj(k^) = k^ (even: real) or -i Im k^ (odd), on the folded modes
       // (a folded mode met several times gets the same value to round-off;
       // one thread, so the last one written is always the same)
       walk_modes(0, Nc, [&](std::size_t j, std::size_t o, unsigned int flips) {
-        k.s[o] = sign(parity, flips) * scale * (k.odd ? -s[j][1] : s[j][0]);
+        k.s[o] = sign(parity, flips) * scale * (k.odd() ? -s[j][1] : s[j][0]);
       });
       return k;
     }

@@ -38,7 +38,12 @@ namespace pdfem
       {
         std::vector<double> s;
         unsigned int        parity = 0;
-        bool                odd    = false;
+
+        bool
+        odd() const
+        {
+          return __builtin_parity(parity);
+        }
       };
 
       /**
@@ -247,6 +252,23 @@ namespace pdfem
         });
       }
 
+      /// h[j] = spectrum(j) = F(w u_j) for j < dim, w(k) = @p weight(k)
+      /// (u component-major, N values per component).
+      template <typename W>
+      void
+      forward_components(const std::vector<double> &u,
+                         const W                   &weight,
+                         fftw_complex *(&h)[dim])
+      {
+        for (unsigned int j = 0; j < dim; ++j)
+          {
+            h[j]             = spectrum(j);
+            const double *uj = u.data() + j * N;
+            fill([&](std::size_t k) { return weight(k) * uj[k]; });
+            forward(h[j]);
+          }
+      }
+
       /// out (+)= factor k in, with k a kernel multiplier.
       void
       multiply(fftw_complex       *out,
@@ -255,12 +277,13 @@ namespace pdfem
                const double        factor,
                const bool          add)
       {
-        const double *s = k.s.data();
+        const double *s   = k.s.data();
+        const bool    odd = k.odd();
         for_modes([&](std::size_t j, std::size_t o, unsigned int flips) {
           const double f = factor * sign(k.parity, flips) * s[o];
           // odd: i f (a + i b) = -f b + i f a
-          const double re = k.odd ? -f * in[j][1] : f * in[j][0];
-          const double im = k.odd ? f * in[j][0] : f * in[j][1];
+          const double re = odd ? -f * in[j][1] : f * in[j][0];
+          const double im = odd ? f * in[j][0] : f * in[j][1];
           if (add)
             {
               out[j][0] += re;

@@ -172,13 +172,9 @@ namespace pdfem
           o.have_periodic_inverse = true;
         }
 
-      std::vector<fftw_complex *> h(dim);
-      for (unsigned int j = 0; j < dim; ++j)
-        {
-          o.fill([&](std::size_t k) { return r[j * o.N + k]; });
-          h[j] = o.spectrum(j);
-          o.forward(h[j]);
-        }
+      fftw_complex *h[dim];
+      o.forward_components(
+        r, [](std::size_t) { return 1.; }, h);
       const double scale = 1. / o.N_global; // FFTW's transforms: unnormalised
       o.for_modes([&](std::size_t m, std::size_t f, unsigned int flips) {
         const double *a = &o.periodic_inverse[f * np];
