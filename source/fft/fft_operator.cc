@@ -109,8 +109,7 @@ namespace pdfem
       , distributed(several_ranks(options.communicator))
       , comm(options.communicator)
       , offsets(horizon_offsets(grid_, material_.horizon))
-      , keep_mask_fields(options.keep_mask_fields ||
-                         material_.model == Model::nonlinear_bond_based)
+      , keep_mask_fields(options.keep_mask_fields)
     {
       N_global = grid.n_nodes();
       row      = grid.n[dim - 1];
@@ -122,12 +121,11 @@ namespace pdfem
       initialise_fftw(distributed);
       if (!distributed)
         {
-          slab      = make_slab(grid, 0, grid.n[0]);
-          N         = N_global;
-          Nc        = N / row * cn[dim - 1];
-          stride    = row;
-          real_size = N;
-          alloc     = Nc;
+          slab   = make_slab(grid, 0, grid.n[0]);
+          N      = N_global;
+          Nc     = N / row * cn[dim - 1];
+          stride = 2 * cn[dim - 1];
+          alloc  = Nc;
         }
       else
         {
@@ -142,12 +140,10 @@ namespace pdfem
           Nc                = k1_count * cn[0];
           for (unsigned int d = 2; d < dim; ++d)
             Nc *= cn[d];
-          alloc     = std::max<std::size_t>(l.alloc, 1);
-          real_size = 2 * alloc;
+          alloc = std::max<std::size_t>(l.alloc, 1);
         }
 
-      real = fftw_alloc_real(real_size);
-      spectrum(0);
+      fftw_complex *s = spectrum(0);
       {
         std::lock_guard<std::mutex> lock(planner_mutex);
         fftw_plan_with_nthreads(static_cast<int>(threads));
@@ -158,8 +154,8 @@ namespace pdfem
             int n[dim];
             for (unsigned int d = 0; d < dim; ++d)
               n[d] = static_cast<int>(grid.n[d]);
-            forward_plan = fftw_plan_dft_r2c(dim, n, real, spectra[0], flags);
-            inverse_plan = fftw_plan_dft_c2r(dim, n, spectra[0], real, flags);
+            forward_plan = fftw_plan_dft_r2c(dim, n, reals(s), s, flags);
+            inverse_plan = fftw_plan_dft_c2r(dim, n, s, reals(s), flags);
           }
         else
           {
@@ -167,9 +163,9 @@ namespace pdfem
             for (unsigned int d = 0; d < dim; ++d)
               n[d] = grid.n[d];
             forward_plan = fftw_mpi_plan_dft_r2c(
-              dim, n, real, spectra[0], comm, flags | FFTW_MPI_TRANSPOSED_OUT);
+              dim, n, reals(s), s, comm, flags | FFTW_MPI_TRANSPOSED_OUT);
             inverse_plan = fftw_mpi_plan_dft_c2r(
-              dim, n, spectra[0], real, comm, flags | FFTW_MPI_TRANSPOSED_IN);
+              dim, n, s, reals(s), comm, flags | FFTW_MPI_TRANSPOSED_IN);
           }
       }
       if (forward_plan == nullptr || inverse_plan == nullptr)
@@ -247,7 +243,6 @@ namespace pdfem
       }
       for (auto s : spectra)
         fftw_free(s);
-      fftw_free(real);
     }
 
     template <int dim>
@@ -268,7 +263,9 @@ namespace pdfem
     {
       // sampled on this rank's slab (a kernel is a function of the
       // periodic offset: each rank samples its own planes)
-      std::memset(real, 0, real_size * sizeof(double));
+      fftw_complex *s = spectrum(0);
+      double       *r = reals(s);
+      std::memset(s, 0, alloc * sizeof(fftw_complex));
       for (const auto &o : offsets)
         {
           std::array<unsigned int, dim> i;
@@ -278,10 +275,9 @@ namespace pdfem
           const std::size_t node = grid.node(i);
           if (!slab.contains(node))
             continue;
-          const std::size_t k              = node - slab.begin;
-          real[k / row * stride + k % row] = value(o);
+          const std::size_t k           = node - slab.begin;
+          r[k / row * stride + k % row] = value(o);
         }
-      fftw_complex *s = spectrum(0);
       forward(s);
       Kernel k;
       k.parity = parity;
@@ -403,6 +399,7 @@ namespace pdfem
       };
       o.P.clear();
       o.q.clear();
+      o.p.clear();
       o.gb.clear();
       if (this->material_.model == Model::lps)
         {
@@ -428,31 +425,31 @@ namespace pdfem
       // the kept fields, made as recomputed ones are (stored_mask_fields is
       // false until they are complete)
       std::vector<std::vector<double>> P = made(o.C.size() + o.K.size());
-      o.for_P([&](unsigned int s, std::size_t k, double r) { P[s][k] += r; });
       if (this->material_.model == Model::lps)
         {
+          o.for_P(
+            [&](unsigned int s, std::size_t k, double r) { P[s][k] += r; });
           o.gb.resize(dim * N);
           o.for_gb([&](unsigned int i, std::size_t k, double r) {
             o.gb[i * N + k] = r;
           });
         }
-      if (this->material_.model == Model::nonlinear_bond_based)
+      else
         {
-          // q_i = [a_i beta], p = [c beta]
-          o.q = made(dim);
-          o.for_correlations(o.a,
-                             beta,
-                             1,
-                             [&](unsigned int i, std::size_t k, double r) {
-                               o.q[i][k] = r;
-                             });
-          o.p.resize(N);
-          o.for_correlations(std::vector<typename Impl::Kernel>{o.c},
-                             beta,
-                             1,
-                             [&](unsigned int, std::size_t k, double r) {
-                               o.p[k] = r;
-                             });
+          // P_s = [C_s beta]; nonlinear: q_i = [a_i beta], p = [c beta]
+          const unsigned int               n_sym = o.C.size();
+          std::vector<std::vector<double>> qp;
+          if (this->material_.model == Model::nonlinear_bond_based)
+            qp = made(dim + 1);
+          o.compute_bond_fields([&](unsigned int s, std::size_t k, double r) {
+            (s < n_sym ? P[s] : qp[s - n_sym])[k] = r;
+          });
+          if (!qp.empty())
+            {
+              o.p = std::move(qp.back());
+              qp.pop_back();
+              o.q = std::move(qp);
+            }
         }
       o.P                  = std::move(P);
       o.stored_mask_fields = true;
@@ -547,18 +544,18 @@ namespace pdfem
         }
       fftw_complex       *b = o.spectrum(1), *t = o.spectrum(2);
       std::vector<double> count(o.N), D(o.N, double(o.offsets.size()));
-      o.fill([&](std::size_t k) { return o.beta[k]; });
+      o.fill(b, [&](std::size_t k) { return o.beta[k]; });
       o.forward(b);
       o.multiply(t, o.omega0, b, 1., false);
       o.inverse(t);
-      o.take(count);
+      o.take(t, count);
       if (normalisation == DamageNormalisation::body)
         {
-          o.fill([&](std::size_t k) { return o.body(k); });
+          o.fill(b, [&](std::size_t k) { return o.body(k); });
           o.forward(b);
           o.multiply(t, o.omega0, b, 1., false);
           o.inverse(t);
-          o.take(D);
+          o.take(t, D);
         }
       d.resize(o.N);
       const double none = 1e-9 * o.offsets.size();
@@ -609,7 +606,6 @@ namespace pdfem
       fields(o.q);
       fields({o.gb, o.beta, o.body_values, o.p, o.m, o.minv, o.theta});
       reals += double(o.body_bits.size()) / 8.;         // chi_B as bytes
-      reals += double(o.real_size);                     // real buffer
       reals += 2. * double(o.spectra.size()) * o.alloc; // spectra
       reals += double(o.periodic_inverse.size());       // G^-1
       return 8. * reals;

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The state of FftOperator (not installed): the FFTW plans, the kernel
 // spectra, the mask fields and the work spectra, with the Fourier-space
-// helpers the models' forms are written with. With several MPI ranks every
-// array is the rank's part: the nodes of its slab (the real buffer padded
-// to FFTW's 2 (n/2 + 1) per row) and its modes in FFTW's transposed layout.
+// helpers the models' forms are written with. The transforms are in place:
+// a spectrum's memory holds the real field before a forward transform and
+// after an inverse one (rows padded to FFTW's 2 (n/2 + 1) doubles), so no
+// real buffer is kept beside the spectra. With several MPI ranks every
+// array is the rank's part: the nodes of its slab and its modes in FFTW's
+// transposed layout.
 #ifndef PDFEM_SOURCE_FFT_FFT_OPERATOR_IMPL_H
 #define PDFEM_SOURCE_FFT_FFT_OPERATOR_IMPL_H
 
@@ -133,79 +136,79 @@ namespace pdfem
       fftw_complex *
       spectrum(unsigned int i);
 
-      /// f(k, i) for every local node k, i its place in the real buffer
-      /// (k on one rank; rows padded to @p stride with several).
+      /// f(k, i) for every local node k, i its place in a spectrum's real
+      /// view: the rows (the last, fastest index) padded to @p stride
+      /// doubles, the layout of FFTW's in-place real transforms.
       template <typename F>
       void
       for_nodes(const F &f)
       {
         const std::size_t nl = row, st = stride;
         internal::parallel_for(threads, N, [&](std::size_t b, std::size_t e) {
-          if (st == nl)
+          std::size_t k = b;
+          while (k < e)
             {
-              for (std::size_t k = b; k < e; ++k)
-                f(k, k);
-              return;
-            }
-          std::size_t col = b % nl, i = b / nl * st + col;
-          for (std::size_t k = b; k < e; ++k)
-            {
-              f(k, i);
-              ++i;
-              if (++col == nl)
-                {
-                  col = 0;
-                  i += st - nl;
-                }
+              const std::size_t r = k / nl, end = std::min(e, (r + 1) * nl);
+              for (std::size_t i = r * st + k % nl; k < end; ++k, ++i)
+                f(k, i);
             }
         });
       }
 
-      /// real = f(k) for every node.
+      /// The real view of a spectrum (in-place transforms).
+      static double *
+      reals(fftw_complex *s)
+      {
+        return reinterpret_cast<double *>(s);
+      }
+
+      /// The real view of @p s = f(k) for every node.
       template <typename F>
       void
-      fill(const F &f)
+      fill(fftw_complex *s, const F &f)
       {
-        double *r = real;
+        double *r = reals(s);
         for_nodes([&](std::size_t k, std::size_t i) { r[i] = f(k); });
       }
 
-      /// g(k, real[k]) for every node, after an inverse transform.
+      /// g(k, value) for every node of the real view of @p s, after
+      /// inverse(s).
       template <typename G>
       void
-      use(const G &g)
+      use(fftw_complex *s, const G &g)
       {
-        const double *r = real;
+        const double *r = reals(s);
         for_nodes([&](std::size_t k, std::size_t i) { g(k, r[i]); });
       }
 
-      /// out = real (N values), after an inverse transform.
+      /// out = the real view of @p s (N values), after inverse(s).
       void
-      take(std::vector<double> &out)
+      take(fftw_complex *s, std::vector<double> &out)
       {
         out.resize(N);
         double *o = out.data();
-        use([o](std::size_t k, double r) { o[k] = r; });
+        use(s, [o](std::size_t k, double r) { o[k] = r; });
       }
 
+      /// s = F(the real view of s), in place.
       void
-      forward(fftw_complex *out)
+      forward(fftw_complex *s)
       {
         if (distributed)
-          fftw_mpi_execute_dft_r2c(forward_plan, real, out);
+          fftw_mpi_execute_dft_r2c(forward_plan, reals(s), s);
         else
-          fftw_execute_dft_r2c(forward_plan, real, out);
+          fftw_execute_dft_r2c(forward_plan, reals(s), s);
         ++transforms;
       }
 
-      /// real = F^-1(in) (unnormalised); destroys @p in.
+      /// The real view of s = F^-1(s) (unnormalised), in place.
       void
-      inverse(fftw_complex *in)
+      inverse(fftw_complex *s)
       {
         if (distributed)
-          fftw_mpi_execute_dft_c2r(inverse_plan, in, real);
+          fftw_mpi_execute_dft_c2r(inverse_plan, s, reals(s));
         else
-          fftw_execute_dft_c2r(inverse_plan, in, real);
+          fftw_execute_dft_c2r(inverse_plan, s, reals(s));
         ++transforms;
       }
 
@@ -264,7 +267,7 @@ namespace pdfem
           {
             h[j]             = spectrum(j);
             const double *uj = u.data() + j * N;
-            fill([&](std::size_t k) { return weight(k) * uj[k]; });
+            fill(h[j], [&](std::size_t k) { return weight(k) * uj[k]; });
             forward(h[j]);
           }
       }
@@ -378,28 +381,41 @@ namespace pdfem
       void
       make_kernels();
 
+      static const Kernel &
+      kernel_of(const Kernel &k)
+      {
+        return k;
+      }
+
+      static const Kernel &
+      kernel_of(const Kernel *k)
+      {
+        return *k;
+      }
+
       /**
-       * f(s, k, c_s(k)) for every kernel s of @p kernels and local node k,
-       * c_s = [k_s w] the correlation of the kernel with the field w(k) =
-       * @p weight(k): one forward and kernels.size() inverse transforms,
-       * spectra @p work and @p work + 1 overwritten. For one s the calls
-       * come from several threads (disjoint k).
+       * f(s, k, c_s(k)) for every kernel s of @p kernels (Kernels or
+       * pointers to them) and local node k, c_s = [k_s w] the correlation
+       * of the kernel with the field w(k) = @p weight(k): one forward and
+       * kernels.size() inverse transforms, spectra @p work and @p work + 1
+       * overwritten. For one s the calls come from several threads
+       * (disjoint k).
        */
-      template <typename W, typename F>
+      template <typename Kernels, typename W, typename F>
       void
-      for_correlations(const std::vector<Kernel> &kernels,
-                       const W                   &weight,
-                       const unsigned int         work,
-                       const F                   &f)
+      for_correlations(const Kernels     &kernels,
+                       const W           &weight,
+                       const unsigned int work,
+                       const F           &f)
       {
         fftw_complex *w = spectrum(work), *t = spectrum(work + 1);
-        fill(weight);
+        fill(w, weight);
         forward(w);
         for (unsigned int s = 0; s < kernels.size(); ++s)
           {
-            multiply(t, kernels[s], w, 1., false);
+            multiply(t, kernel_of(kernels[s]), w, 1., false);
             inverse(t);
-            use([&](std::size_t k, double r) { f(s, k, r); });
+            use(t, [&](std::size_t k, double r) { f(s, k, r); });
           }
       }
 
@@ -417,8 +433,10 @@ namespace pdfem
       {
         if (stored_mask_fields)
           {
-            for (unsigned int s = 0; s < P.size(); ++s)
-              for_nodes([&](std::size_t k, std::size_t) { f(s, k, P[s][k]); });
+            for_nodes([&](std::size_t k, std::size_t) {
+              for (unsigned int s = 0; s < P.size(); ++s)
+                f(s, k, P[s][k]);
+            });
             return;
           }
         const auto b = [this](std::size_t k) { return beta[k]; };
@@ -432,6 +450,30 @@ namespace pdfem
         });
         for_correlations(
           K, [this](std::size_t k) { return beta[k] * minv[k]; }, 0, f);
+      }
+
+      /**
+       * f(s, k, v) for the mask fields of the bond-based models computed
+       * from beta, v the value at node k of P_s = [C_s beta] (s < n_sym),
+       * q_i = [a_i beta] (s = n_sym + i) and p = [c beta] (s = n_sym +
+       * dim); the last two of the nonlinear model only. One forward and
+       * one inverse transform per field, spectra 0 and 1 overwritten.
+       */
+      template <typename F>
+      void
+      compute_bond_fields(const F &f)
+      {
+        std::vector<const Kernel *> kernels;
+        for (const Kernel &k : C)
+          kernels.push_back(&k);
+        if (material.model == Model::nonlinear_bond_based)
+          {
+            for (const Kernel &k : a)
+              kernels.push_back(&k);
+            kernels.push_back(&c);
+          }
+        for_correlations(
+          kernels, [this](std::size_t k) { return beta[k]; }, 0, f);
       }
 
       /// L_i -= factor sum_j u_j P_ij for every node (P from for_P();
@@ -499,10 +541,9 @@ namespace pdfem
       MPI_Comm comm        = MPI_COMM_SELF;
       // local nodes N (the slab's), local modes Nc, box nodes N_global;
       // a row (the last, fastest index) has row nodes and takes stride
-      // doubles in the real buffer (real_size doubles), a spectrum alloc
-      // complex numbers
+      // doubles in a spectrum's real view, a spectrum alloc complex numbers
       std::size_t N = 0, Nc = 0, N_global = 0, row = 0, stride = 0;
-      std::size_t real_size = 0, alloc = 0;
+      std::size_t alloc = 0;
       Slab        slab;
       // the complex box n_0 x ... x (n_{dim-1}/2 + 1); several ranks: the
       // rank's modes are k_1 = k1_first, ..., k1_first + k1_count - 1
@@ -512,7 +553,6 @@ namespace pdfem
       std::vector<Offset<dim>> const offsets;
       fftw_plan                      forward_plan = nullptr;
       fftw_plan                      inverse_plan = nullptr;
-      double                        *real         = nullptr;
       std::vector<fftw_complex *>    spectra;
       std::size_t                    transforms = 0;
 
@@ -526,8 +566,8 @@ namespace pdfem
       // is 0 or 1, else as doubles; P_s = [C_s beta] (bond based) or
       // (1/m) [K_s beta] + [K_s (beta/m)] (LPS), q_i = [a_i beta],
       // p = [c beta] (nonlinear); LPS: 1/m (0 where m = 0),
-      // gb_i = [g_i beta], theta. P and gb are empty where recomputed
-      // (keep_mask_fields false; the nonlinear model keeps its fields);
+      // gb_i = [g_i beta], theta. P, q, p and gb are empty where
+      // recomputed (keep_mask_fields false);
       // m is made by weighted_volume() only.
       // (stored_mask_fields: kept and made; a flag, not the sizes, so that
       // ranks without nodes take the same transforms)

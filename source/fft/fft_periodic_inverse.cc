@@ -116,8 +116,8 @@ namespace pdfem
                 impulse[j * o.N] = 0.;
               for (unsigned int i = 0; i <= j; ++i)
                 {
-                  o.fill([&](std::size_t k) { return -L[i * o.N + k]; });
                   fftw_complex *s = o.spectrum(i);
+                  o.fill(s, [&](std::size_t k) { return -L[i * o.N + k]; });
                   o.forward(s);
                   // on the folded modes: entry (i, j) has the parity of
                   // K_ij (one thread: the same value is always kept)
@@ -198,7 +198,7 @@ namespace pdfem
       for (unsigned int i = 0; i < dim; ++i)
         {
           o.inverse(h[i]);
-          o.use([&](std::size_t k, double v) { z[i * o.N + k] = v; });
+          o.use(h[i], [&](std::size_t k, double v) { z[i * o.N + k] = v; });
         }
     }
 

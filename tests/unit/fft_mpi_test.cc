@@ -284,7 +284,8 @@ TEST(FftMpi, Threads3D)
 // planes or modes take the same transforms.
 TEST(FftMpi, RecomputedMaskFields)
 {
-  for (const Model model : {Model::linear_bond_based, Model::lps})
+  for (const Model model :
+       {Model::linear_bond_based, Model::nonlinear_bond_based, Model::lps})
     {
       compare(grid<3>({{13, 10, 14}}, {{1., 0.9, 0.8}}),
               material(model, 2.55),

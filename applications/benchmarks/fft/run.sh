@@ -33,8 +33,7 @@ ms=3,4,5,6,8,10
     if [ "$dim" = 3 ]; then k=21; d=15; else k=22; d=16; fi
     for model in linear lps nonlinear; do
       "$bench" --dim $dim --model $model --log2n $k --m 5 --direct-log2 $d --seconds "$s"
-      [ "$model" = nonlinear ] ||
-        "$bench" --dim $dim --model $model --log2n $k --m 5 --direct-log2 $d --seconds "$s" --lean
+      "$bench" --dim $dim --model $model --log2n $k --m 5 --direct-log2 $d --seconds "$s" --lean
     done
   done
 } | tee "$memory"

@@ -45,12 +45,13 @@ namespace pdfem
        * set_masks() to the evaluations (true) or recomputed in each
        * (false, the lean setting; theory.md §14.3). Kept: P_ij = [C_ij beta]
        * of the linear bond-based model (dim (dim + 1) / 2 fields, 48 bytes
-       * per node in 3D), and of LPS [g_i beta] (dim fields) with the
-       * combined (1/m) [K_ij beta] + [K_ij (beta/m)] (72 bytes per node in
-       * 3D). Recomputing takes per force evaluation in 3D 13 transforms
-       * instead of 6 (linear bond based) and 32 instead of 14 (LPS); the
-       * results are the same to round-off. The nonlinear bond-based model
-       * keeps its fields either way.
+       * per node in 3D), of the nonlinear one also q_i = [a_i beta] and
+       * p = [c beta] (80 bytes), and of LPS [g_i beta] (dim fields) with
+       * the combined (1/m) [K_ij beta] + [K_ij (beta/m)] (72 bytes per node
+       * in 3D). Recomputing takes per force evaluation in 3D 13 transforms
+       * instead of 6 (linear bond based), 55 instead of 35 (nonlinear bond
+       * based) and 32 instead of 14 (LPS); the results are the same to
+       * round-off.
        */
       bool keep_mask_fields = true;
     };
@@ -92,8 +93,10 @@ namespace pdfem
      *   §7 E2-E4, dilatation kernel g = omega xi as in E3).
      *
      * Per evaluation (3D): linear bond based 3 forward + 3 inverse FFTs,
-     * LPS 7 + 7, nonlinear bond based 13 + 23. FFTW headers are kept out of
-     * this header (pimpl).
+     * LPS 7 + 7, nonlinear bond based 13 + 22. The transforms are in place
+     * (a work spectrum's memory holds the real field before and after),
+     * so no real buffer is kept beside the work spectra. FFTW
+     * headers are kept out of this header (pimpl).
      *
      * MPI (FftOptions::communicator with several ranks): each rank holds
      * the Slab slab() of the box, whole planes of the slowest index, and
