@@ -4,9 +4,11 @@
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
 #include <pdfem/base/state_archive.h>
+#include <pdfem/base/thread_team.h>
 
 #include <deal.II/base/mpi.h>
 
+#include <atomic>
 #include <numeric>
 
 #include "coupled_system_impl.h"
@@ -51,8 +53,15 @@ namespace pdfem
           // A bond can only meet a crack if its owner is within two horizons
           // of the crack's bounding box; each owner tests only those cracks
           // (one box around all new segments spanned the whole plate once
-          // two tips grew apart, and every bond was tested).
-          std::vector<std::pair<Point<dim>, Point<dim>>> boxes;
+          // two tips grew apart, and every bond was tested), and each bond
+          // only those whose box meets its own (a 3D growth step of the
+          // maximum principal stress criterion cuts with 100 discs of 12
+          // triangles each: on the 14.6 k-DoF box the tests took 6 s of a
+          // 9.6 s run). The margin, 1e-9 of the extents, is far above the
+          // exact tests' tolerances. Owners in chunks on the threads; each
+          // owner writes its own bonds only.
+          using Box = std::pair<Point<dim>, Point<dim>>;
+          std::vector<Box> boxes;
           for (const auto &crack : cracks)
             {
               Point<dim> lo = crack.points[0], hi = lo;
@@ -64,39 +73,70 @@ namespace pdfem
                   }
               boxes.emplace_back(lo, hi);
             }
-          PD::Families                 &f = s.families;
-          std::vector<Mesh::Crack<dim>> near;
-          std::vector<std::size_t>      cut_families;
-          for (std::size_t o = 0; o < f.owners.size(); ++o)
-            {
-              const unsigned int k = f.owners[o];
-              if (s.no_fail[k])
-                continue;
-              const double reach = 2. * s.horizon[k];
-              near.clear();
-              for (std::size_t c = 0; c < cracks.size(); ++c)
+          const auto overlap = [&](const Box &x, const Box &c, double reach) {
+            double extent = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              extent = std::max(
+                {extent, x.second[d] - x.first[d], c.second[d] - c.first[d]});
+            reach += 1e-9 * extent;
+            for (unsigned int d = 0; d < dim; ++d)
+              if (x.first[d] > c.second[d] + reach ||
+                  x.second[d] < c.first[d] - reach)
+                return false;
+            return true;
+          };
+          PD::Families              &f     = s.families;
+          constexpr std::size_t      chunk = 256;
+          ThreadTeam                &team  = ThreadTeam::shared();
+          std::vector<unsigned long> counts(team.size(), 0);
+          std::vector<char>          lost(f.owners.size(), 0);
+          std::atomic<std::size_t>   next{0};
+          team.run([&](const unsigned int member) {
+            std::vector<unsigned int> near;
+            for (std::size_t first = chunk * next++; first < f.owners.size();
+                 first             = chunk * next++)
+              for (std::size_t o = first;
+                   o < std::min(first + chunk, f.owners.size());
+                   ++o)
                 {
-                  bool inside = true;
-                  for (unsigned int d = 0; d < dim; ++d)
-                    inside = inside && s.x[k][d] >= boxes[c].first[d] - reach &&
-                             s.x[k][d] <= boxes[c].second[d] + reach;
-                  if (inside)
-                    near.push_back(cracks[c]);
+                              const unsigned int k = f.owners[o];
+                              if (s.no_fail[k])
+                    continue;
+                  const Box owner(s.x[k], s.x[k]);
+                              near.clear();
+                              for (unsigned int c = 0; c < cracks.size(); ++c)
+                    if (overlap(owner, boxes[c], 2. * s.horizon[k]))
+                      near.push_back(c);
+                  if (near.empty())
+                    continue;
+                  for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
+                    {
+                                  const unsigned int m = f.members[b];
+                                  if (!f.intact[b] || s.no_fail[m])
+                        continue;
+                      Box bond(s.x[k], s.x[k]);
+                                  for (unsigned int d = 0; d < dim; ++d)
+                        {
+                                      bond.first[d]  = std::min(s.x[k][d], s.x[m][d]);
+                                      bond.second[d] = std::max(s.x[k][d], s.x[m][d]);
+                        }
+                      for (const unsigned int c : near)
+                        if (overlap(bond, boxes[c], 0.) &&
+                            cracks[c].cuts(s.x[k], s.x[m]))
+                          {
+                                        f.intact[b] = 0;
+                                        ++counts[member];
+                                        lost[o] = 1;
+                                        break;
+                          }
+                    }
                 }
-              if (near.empty())
-                continue;
-              bool lost = false;
-              for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
-                if (f.intact[b] && !s.no_fail[f.members[b]] &&
-                    Mesh::cut_by_any(near, s.x[k], s.x[f.members[b]]))
-                  {
-                    f.intact[b] = 0;
-                    ++n;
-                    lost = true;
-                  }
-              if (lost)
-                cut_families.push_back(o);
-            }
+          });
+          n = std::accumulate(counts.begin(), counts.end(), 0ul);
+          std::vector<std::size_t> cut_families;
+          for (std::size_t o = 0; o < f.owners.size(); ++o)
+            if (lost[o])
+              cut_families.push_back(o);
           if (s.settings.free_crack_faces)
             s.add_crack_face_area(cracks);
           typename Impl::FractureEvent event;

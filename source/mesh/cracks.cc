@@ -61,6 +61,27 @@ namespace pdfem
                              const Point<3> &p1,
                              const Point<3> &p2)
       {
+        // Bounding boxes first: most of a growth step's tests (every bond
+        // near a cluster of 12-triangle discs against each triangle) end
+        // here, without the normal's square roots. The margin, 1e-9 of the
+        // extents, is far above the tolerances below, so this rejects only
+        // pairs the exact test rejects too.
+        {
+          double extent = 0.;
+          double lo[3], hi[3], tlo[3], thi[3];
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              lo[d]  = std::min(a[d], b[d]);
+              hi[d]  = std::max(a[d], b[d]);
+              tlo[d] = std::min({p0[d], p1[d], p2[d]});
+              thi[d] = std::max({p0[d], p1[d], p2[d]});
+              extent = std::max({extent, hi[d] - lo[d], thi[d] - tlo[d]});
+            }
+          const double margin = 1e-9 * extent;
+          for (unsigned int d = 0; d < 3; ++d)
+            if (lo[d] > thi[d] + margin || hi[d] < tlo[d] - margin)
+              return false;
+        }
         const Tensor<1, 3> e1  = p1 - p0;
         const Tensor<1, 3> e2  = p2 - p0;
         const Tensor<1, 3> n   = dealii::cross_product_3d(e1, e2);
