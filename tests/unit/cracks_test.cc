@@ -35,6 +35,15 @@ TEST(Cracks, SegmentCrossingTriangle3D)
     crack.cuts(Point<3>(0.1, 0.2, 0.2), Point<3>(1., 0.2, 0.2))); // one side
   EXPECT_TRUE(
     crack.cuts(Point<3>(-1., 0.5, 0.5), Point<3>(1., 0.5, 0.5))); // on an edge
+  // Touching at the bounding boxes' faces (the boxes are tested first):
+  // an end on the triangle, a segment through a vertex, one through the
+  // vertex's corner of the box but beside the triangle.
+  EXPECT_TRUE(crack.cuts(Point<3>(0., 0.2, 0.2), Point<3>(1., 0.2, 0.2)));
+  EXPECT_TRUE(crack.cuts(Point<3>(-1., 1., 0.), Point<3>(1., 1., 0.)));
+  EXPECT_TRUE(crack.cuts(Point<3>(-1., 0., 1.), Point<3>(1e-3, 0., 1.)));
+  EXPECT_FALSE(crack.cuts(Point<3>(-1., 1., 1.), Point<3>(1., 1., 1.)));
+  EXPECT_FALSE(
+    crack.cuts(Point<3>(-1., 0.2, 1. + 1e-6), Point<3>(1., 0.2, 1. + 1e-6)));
 }
 
 TEST(Cracks, AnyOfSeveral)
