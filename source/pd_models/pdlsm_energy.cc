@@ -283,18 +283,31 @@ namespace pdfem
       // g_a, C_ia = [a = m_i] - [a = k] - g_a . xi_i. Condensed: f = K' u.
       if (const CondensedFamily *c = condensed[o].get())
         {
+          // f_a = sum_b K_ab u_b from the upper triangle: K_ab u_b into
+          // f_a and K_ab^T u_a into f_b.
           const PD::Families &fam  = *this->region.families;
-          const std::size_t   n    = c->bonds.size() + 1;
+          const std::size_t   n    = c->size();
           const auto          node = [&](const std::size_t a) {
             return a == 0 ? fam.owners[o] : fam.members[c->bonds[a - 1]];
           };
-          f.assign(n, Tensor<1, dim>());
-          for (std::size_t b = 0; b < n; ++b)
+          std::vector<Tensor<1, dim>> &u_nodes = f;
+          u_nodes.resize(n);
+          for (std::size_t a = 0; a < n; ++a)
+            u_nodes[a] = u[node(a)];
+          std::vector<Tensor<1, dim>> sum(n);
+          const Tensor<2, dim>       *K = c->K.data();
+          for (std::size_t a = 0; a < n; ++a)
             {
-              const Tensor<1, dim> u_b = u[node(b)];
-              for (std::size_t a = 0; a < n; ++a)
-                f[a] += c->K[a * n + b] * u_b;
+              const Tensor<1, dim> u_a = u_nodes[a];
+              Tensor<1, dim>       f_a = *K++ * u_a;
+              for (std::size_t b = a + 1; b < n; ++b, ++K)
+                {
+                  f_a += *K * u_nodes[b];
+                  sum[b] += u_a * *K; // K_ab^T u_a
+                }
+              sum[a] += f_a;
             }
+          f.swap(sum);
           return;
         }
       const auto [nodes, g, bond_vector, beta] = family_weights(o);
@@ -330,7 +343,13 @@ namespace pdfem
                                      std::vector<Tensor<2, dim>> &K) const
     {
       if (const CondensedFamily *c = condensed[o].get())
-        K = c->K;
+        {
+          const std::size_t n = c->size();
+          K.resize(n * n);
+          for (std::size_t a = 0; a < n; ++a)
+            for (std::size_t b = 0; b < n; ++b)
+              K[a * n + b] = c->block(a, b);
+        }
       else
         weights_tangent(
           family_weights(o),
@@ -404,13 +423,17 @@ namespace pdfem
           for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
             if (in_fit[j])
               c->bonds.push_back(j);
+          std::vector<Tensor<2, dim>> full;
           weights_tangent(family_weights(o),
                           (*this->region.pd_volume)[f.owners[o]],
-                          c->K);
+                          full);
+          const std::size_t n = c->size();
+          for (std::size_t a = 0; a < n; ++a)
+            for (std::size_t b = a; b < n; ++b)
+              c->K.push_back(full[a * n + b]);
           condensed[o] = std::move(c);
         }
       CondensedFamily         &c = *condensed[o];
-      const std::size_t        n = c.bonds.size() + 1;
       std::vector<std::size_t> keep{0}, lost;
       for (std::size_t i = 0; i < c.bonds.size(); ++i)
         (f.intact[c.bonds[i]] ? keep : lost).push_back(i + 1);
@@ -428,11 +451,11 @@ namespace pdfem
             for (std::size_t b = 0; b < nl; ++b)
               for (unsigned int j = 0; j < dim; ++j)
                 K_bb(dim * a + i, dim * b + j) =
-                  c.K[lost[a] * n + lost[b]][i][j];
+                  c.block(lost[a], lost[b])[i][j];
             for (std::size_t b = 0; b < nr; ++b)
               for (unsigned int j = 0; j < dim; ++j)
                 K_br(dim * a + i, dim * b + j) =
-                  c.K[lost[a] * n + keep[b]][i][j];
+                  c.block(lost[a], keep[b])[i][j];
           }
       // X = K_bb^+ K_br column by column (vmult is what applies the
       // pseudo-inverse of the SVD state).
@@ -446,17 +469,22 @@ namespace pdfem
           for (std::size_t l = 0; l < dim * nl; ++l)
             X(l, b) = solved[l];
         }
-      std::vector<Tensor<2, dim>> K(nr * nr);
+      // the upper triangle of K' (symmetric; its round-off asymmetry is
+      // not kept; K_rb K_bb^+ K_br = K_br^T X by one matrix product:
+      // deal.II hands it to BLAS)
+      FullMatrix<double> correction(dim * nr, dim * nr);
+      K_br.Tmmult(correction, X);
+      std::vector<Tensor<2, dim>> K;
+      K.reserve(nr * (nr + 1) / 2);
       for (std::size_t a = 0; a < nr; ++a)
-        for (std::size_t b = 0; b < nr; ++b)
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = 0; j < dim; ++j)
-              {
-                double s = c.K[keep[a] * n + keep[b]][i][j];
-                for (std::size_t l = 0; l < dim * nl; ++l)
-                  s -= K_br(l, dim * a + i) * X(l, dim * b + j);
-                K[a * nr + b][i][j] = s;
-              }
+        for (std::size_t b = a; b < nr; ++b)
+          {
+            Tensor<2, dim> B = c.block(keep[a], keep[b]);
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                B[i][j] -= correction(dim * a + i, dim * b + j);
+            K.push_back(B);
+          }
       c.K.swap(K);
       std::vector<std::size_t> bonds;
       for (std::size_t a = 1; a < nr; ++a)

@@ -149,17 +149,24 @@ namespace pdfem
           assembled.compress(VectorOperation::add);
 
           // The owned rows in order (the partition is contiguous and
-          // ordered by rank), gathered on rank 0.
+          // ordered by rank), gathered on rank 0. Epetra views: deal.II's
+          // row iterator extracts the whole row again at every step, which
+          // took 12 of the 18.6 s of set-up on the 14.6 k-DoF box.
           std::vector<int>          row_length;
           std::vector<unsigned int> column;
           std::vector<double>       value;
+          const Epetra_CrsMatrix   &A = assembled.trilinos_matrix();
           for (const auto j : owned)
             {
-              row_length.push_back(assembled.row_length(j));
-              for (auto e = assembled.begin(j); e != assembled.end(j); ++e)
+              int     n = 0;
+              double *v = nullptr;
+              int    *c = nullptr;
+              A.ExtractMyRowView(A.LRID(static_cast<int>(j)), n, v, c);
+              row_length.push_back(n);
+              for (int e = 0; e < n; ++e)
                 {
-                  column.push_back(e->column());
-                  value.push_back(e->value());
+                  column.push_back(static_cast<unsigned int>(A.GCID(c[e])));
+                  value.push_back(v[e]);
                 }
             }
           row_length = gather(row_length, comm);
@@ -186,8 +193,16 @@ namespace pdfem
                 matrix.reinit(serial);
                 e = 0;
                 for (unsigned int j = 0; j < n; ++j)
-                  for (int k = 0; k < row_length[j]; ++k, ++e)
-                    matrix.set(j, column[e], value[e]);
+                  {
+                    columns.assign(column.begin() + e,
+                                   column.begin() + e + row_length[j]);
+                    matrix.set(j,
+                               row_length[j],
+                               columns.data(),
+                               value.data() + e,
+                               false);
+                    e += row_length[j];
+                  }
                 matrix.compress(VectorOperation::insert);
                 b.reinit(all, MPI_COMM_SELF);
                 x.reinit(all, MPI_COMM_SELF);
