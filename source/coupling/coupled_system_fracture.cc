@@ -85,56 +85,66 @@ namespace pdfem
                 return false;
             return true;
           };
-          PD::Families              &f     = s.families;
-          constexpr std::size_t      chunk = 256;
-          ThreadTeam                &team  = ThreadTeam::shared();
-          std::vector<unsigned long> counts(team.size(), 0);
-          std::vector<char>          lost(f.owners.size(), 0);
-          std::atomic<std::size_t>   next{0};
-          team.run([&](const unsigned int member) {
-            std::vector<unsigned int> near;
-            for (std::size_t first = chunk * next++; first < f.owners.size();
-                 first             = chunk * next++)
-              for (std::size_t o = first;
-                   o < std::min(first + chunk, f.owners.size());
-                   ++o)
-                {
-                              const unsigned int k = f.owners[o];
-                              if (s.no_fail[k])
-                    continue;
-                  const Box owner(s.x[k], s.x[k]);
-                              near.clear();
-                              for (unsigned int c = 0; c < cracks.size(); ++c)
-                    if (overlap(owner, boxes[c], 2. * s.horizon[k]))
-                      near.push_back(c);
-                  if (near.empty())
-                    continue;
-                  for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
+          PD::Families &f = s.families;
+          // The bonds of family o that a crack cuts, broken; their number.
+          const auto cut_family = [&](const std::size_t          o,
+                                      std::vector<unsigned int> &near) {
+            const unsigned int k = f.owners[o];
+            if (s.no_fail[k])
+              return 0ul;
+            near.clear();
+            for (unsigned int c = 0; c < cracks.size(); ++c)
+              if (overlap(Box(s.x[k], s.x[k]), boxes[c], 2. * s.horizon[k]))
+                near.push_back(c);
+            unsigned long cut = 0;
+            for (std::size_t b = f.offsets[o];
+                 !near.empty() && b < f.offsets[o + 1];
+                 ++b)
+              {
+                const unsigned int m = f.members[b];
+                if (!f.intact[b] || s.no_fail[m])
+                  continue;
+                Box bond;
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    bond.first[d]  = std::min(s.x[k][d], s.x[m][d]);
+                    bond.second[d] = std::max(s.x[k][d], s.x[m][d]);
+                  }
+                for (const unsigned int c : near)
+                  if (overlap(bond, boxes[c], 0.) &&
+                      cracks[c].cuts(s.x[k], s.x[m]))
                     {
-                                  const unsigned int m = f.members[b];
-                                  if (!f.intact[b] || s.no_fail[m])
-                        continue;
-                      Box bond(s.x[k], s.x[k]);
-                                  for (unsigned int d = 0; d < dim; ++d)
-                        {
-                                      bond.first[d]  = std::min(s.x[k][d], s.x[m][d]);
-                                      bond.second[d] = std::max(s.x[k][d], s.x[m][d]);
-                        }
-                      for (const unsigned int c : near)
-                        if (overlap(bond, boxes[c], 0.) &&
-                            cracks[c].cuts(s.x[k], s.x[m]))
-                          {
-                                        f.intact[b] = 0;
-                                        ++counts[member];
-                                        lost[o] = 1;
-                                        break;
-                          }
+                      f.intact[b] = 0;
+                      ++cut;
+                      break;
                     }
-                }
-          });
+              }
+            return cut;
+          };
+          const std::size_t          n_owners = f.owners.size();
+          constexpr std::size_t      chunk    = 256;
+          ThreadTeam                &team     = ThreadTeam::shared();
+          std::vector<unsigned long> counts(team.size(), 0);
+          std::vector<char>          lost(n_owners, 0);
+          std::atomic<std::size_t>   next{0};
+
+          const auto chunks = [&](const unsigned int member) {
+            std::vector<unsigned int> near;
+            for (std::size_t first; (first = chunk * next++) < n_owners;)
+              {
+                const std::size_t last = std::min(first + chunk, n_owners);
+                for (std::size_t o = first; o < last; ++o)
+                  {
+                    const unsigned long cut = cut_family(o, near);
+                    counts[member] += cut;
+                    lost[o] = cut > 0;
+                  }
+              }
+          };
+          team.run(chunks);
           n = std::accumulate(counts.begin(), counts.end(), 0ul);
           std::vector<std::size_t> cut_families;
-          for (std::size_t o = 0; o < f.owners.size(); ++o)
+          for (std::size_t o = 0; o < n_owners; ++o)
             if (lost[o])
               cut_families.push_back(o);
           if (s.settings.free_crack_faces)

@@ -135,7 +135,8 @@ namespace pdfem
       //     + 1/2 |u|^2 [c (beta u_i)] - 1/2 |u|^2 u_i p.
       // Terms without a factor outside the correlation are summed in
       // Fourier space (acc_i); the others are inverted one by one and added
-      // into L. dim + 2 work spectra. The mask-field terms (P, q, p): kept
+      // into L. dim + 2 work spectra (dim + 1 recomputing the fields, below).
+      // The mask-field terms (P, q, p): kept
       // fields in the last pass over the nodes; recomputed ones first,
       // field by field (they use spectra 0 and 1 before the sums need them).
       // Both forms are kept: the field-by-field one in the last pass made
