@@ -17,6 +17,7 @@
 # usage: applications/benchmarks/scaling/growth.sh [BUILD_DIR] [OUT_DIR]
 #   SIZES_2D="100 200 400 720" SIZES_3D="20 40 60 80 96" (1/h: cells per metre).
 source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" "${1:-}" "${2:-}"
+source "$here/scene.sh"
 
 csv="$out/scaling_growth.csv"
 echo "dim,cells_per_m,dofs,bonds,setup_s,growth_steps,step_s,step_max_s,gmres_iterations,broken_bonds,process_wall_s,peak_mb,solver_path" > "$csv"
@@ -24,13 +25,7 @@ echo "dim,cells_per_m,dofs,bonds,setup_s,growth_steps,step_s,step_max_s,gmres_it
 run() { # dim cells_per_metre
   local dim=$1 n=$2 name
   if [ "$dim" = 3 ]; then name=box; else name=plate; fi
-  local dir="$work/$name-$n"
-  mkdir -p "$dir"
-  sed "s/@H@/1 \/ $n/" "$here/$name.geo.in" > "$dir/$name.geo"
-  cp "$here/${name}_growth.prm" "$dir/"
-  local start; start=$(date +%s.%N)
-  "$pdfem" "$dir/${name}_growth.prm" --output "$dir/out" --quiet
-  local wall; wall=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.2f", e - s }')
+  run_scene "$name" "$n" "${name}_growth.prm"
   local steps
   steps=$(python3 - "$dir/out/history.csv" << 'PY'
 import csv, sys

@@ -17,6 +17,7 @@
 #   SIZES_3D="20 40 60 80 96" SIZES_2D="100 200 400 720" SIZES_EXPLICIT="20 40 60 80" (1/h: cells
 #   per metre) select the sizes.
 source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" "${1:-}" "${2:-}"
+source "$here/scene.sh"
 
 sizes_3d=${SIZES_3D:-20 40 60 80 96}
 sizes_2d=${SIZES_2D:-100 200 400 720}
@@ -24,16 +25,10 @@ csv="$out/scaling.csv"
 echo "dim,cells_per_m,dofs,pd_nodes,bonds,mesh_s,setup_s,assembly_s,solve_s,total_s,compute_s,process_wall_s,peak_mb,gmres_iterations,max_ux,ux_error" > "$csv"
 
 run() { # dim cells_per_metre
-  local dim=$1 n=$2 name geo
+  local dim=$1 n=$2 name
   if [ "$dim" = 3 ]; then name=box; else name=plate; fi
-  local dir="$work/$name-$n"
-  mkdir -p "$dir"
-  sed "s/@H@/1 \/ $n/" "$here/$name.geo.in" > "$dir/$name.geo"
-  cp "$here/$name.prm" "$dir/"
-  local start; start=$(date +%s.%N)
-  "$pdfem" "$dir/$name.prm" --output "$dir/out" --quiet
-  local wall; wall=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.2f", e - s }')
-  local s="$dir/out/summary.json" mesh total ux
+  run_scene "$name" "$n" "$name.prm"
+  local mesh total ux
   mesh=$(v "$dir/out" timings.mesh); total=$(v "$dir/out" timings.total)
   ux=$(v "$dir/out" final.max_displacement.x)
   printf '%s,%s,%s,%s,%s,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%s,%.0f,%s,%s,%.2e\n' "$dim" "$n" \
@@ -48,14 +43,9 @@ run() { # dim cells_per_metre
 explicit_csv="$out/scaling_explicit.csv"
 echo "dim,cells_per_m,dofs,bonds,steps,setup_s,seconds_per_step,process_wall_s,peak_mb" > "$explicit_csv"
 run_explicit() { # cells_per_metre
-  local n=$1 dir="$work/explicit-$1"
-  mkdir -p "$dir"
-  sed "s/@H@/1 \/ $n/" "$here/box.geo.in" > "$dir/box.geo"
-  cp "$here/box.prm" "$dir/"
-  local start; start=$(date +%s.%N)
-  "$pdfem" "$dir/box.prm" --output "$dir/out" --quiet --set "Material/Density=2700" --set "Peridynamics/Model=pdlsm" \
+  local n=$1
+  run_scene box "$n" box.prm --set "Material/Density=2700" --set "Peridynamics/Model=pdlsm" \
     --set "Driver/Type=explicit" --set "Driver/Time step=1e-8" --set "Driver/End time=2e-7"
-  local wall; wall=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.2f", e - s }')
   local steps total mesh setup
   steps=$(v "$dir/out" steps); total=$(v "$dir/out" timings.total)
   mesh=$(v "$dir/out" timings.mesh); setup=$(v "$dir/out" timings.setup)
