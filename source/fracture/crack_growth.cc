@@ -444,24 +444,23 @@ namespace pdfem
         std::vector<Candidate> &mine      = found[member];
         double                 &largest   = member_largest[member];
         double                  threshold = std::min(largest, strength);
-        for (std::size_t first = chunk * next++; first < n_owners;
-             first             = chunk * next++)
+        for (std::size_t first; (first = chunk * next++) < n_owners;)
           for (std::size_t o = first; o < std::min(first + chunk, n_owners);
                ++o)
             {
-                          const unsigned int k = f.owners[o];
-                          for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
+              const unsigned int k = f.owners[o];
+              for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
                 {
-                              const unsigned int m = f.members[b];
-                              if (!f.intact[b] ||
+                  const unsigned int m = f.members[b];
+                  if (!f.intact[b] ||
                       half_bound[k] + half_bound[m] <= threshold)
                     continue;
                   const double s1 = eigenvalues(
                     0.5 * (results.stress[k] + results.stress[m]))[0];
-                              if (s1 > largest)
+                  if (s1 > largest)
                     {
-                                  largest   = s1;
-                                  threshold = std::min(largest, strength);
+                      largest   = s1;
+                      threshold = std::min(largest, strength);
                     }
                   if (s1 > strength)
                     mine.push_back({s1, std::min(k, m), std::max(k, m)});
