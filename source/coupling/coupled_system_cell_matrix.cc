@@ -109,24 +109,23 @@ namespace pdfem
               fe_values[member] = std::make_unique<hp::FEValues<dim>>(
                 mapping, fe, quadrature, update_gradients | update_JxW_values);
             hp::FEValues<dim> &fv = *fe_values[member];
-            for (std::size_t first = cells_per_chunk * next++; first < n;
-                 first             = cells_per_chunk * next++)
+            for (std::size_t first; (first = cells_per_chunk * next++) < n;)
               for (std::size_t i = first;
                    i < std::min(first + cells_per_chunk, n);
                    ++i)
                 {
-                              const auto &cell = cells[begin + i];
-                              Slot       &s    = slots[i];
-                              fv.reinit(cell);
-                              FE::cell_stiffness(fv.get_present_fe_values(),
+                  const auto &cell = cells[begin + i];
+                  Slot       &s    = slots[i];
+                  fv.reinit(cell);
+                  FE::cell_stiffness(fv.get_present_fe_values(),
                                      settings.material,
                                      s.K);
-                              const double f = factor(cell->active_cell_index());
-                              if (f != 1.)
+                  const double f = factor(cell->active_cell_index());
+                  if (f != 1.)
                     for (double &k : s.K)
                       k *= f;
                   s.dofs.resize(cell->get_fe().n_dofs_per_cell());
-                              cell->get_dof_indices(s.dofs);
+                  cell->get_dof_indices(s.dofs);
                 }
           });
           team.run([&](const unsigned int member) {

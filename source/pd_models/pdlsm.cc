@@ -187,8 +187,7 @@ namespace pdfem
       std::vector<std::size_t>       member_first(team.size(), n_owners);
       std::atomic<std::size_t>       next{0};
       team.run([&](const unsigned int member) {
-        for (std::size_t first = chunk * next++; first < n_owners;
-             first             = chunk * next++)
+        for (std::size_t first; (first = chunk * next++) < n_owners;)
           for (std::size_t o = first; o < std::min(first + chunk, n_owners);
                ++o)
             if (!fit(o, workspace[member]) && member_bad[member]++ == 0)
