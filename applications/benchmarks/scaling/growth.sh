@@ -4,7 +4,7 @@
 # auto`; every growth step changes the matrix, so matrix-free GMRES with "amg fe" stays).
 #   2D: plate_growth.prm, a centre crack grown by mcts (FC 1), one cell per tip and step, 6 steps.
 #   3D: box_growth.prm, a through crack grown by the maximum principal stress (FC 2, 100 bonds per
-#       step), 5 steps (the driver jumps to the critical load at step 3).
+#       step), 5 steps (the driver jumps to the critical load; the steps at that load grow).
 # A growth step is a step that breaks bonds and solves again (history.csv: more broken bonds than
 # the row before and linear iterations > 0); its time is the difference of wall_seconds from the
 # row before: the criterion, the bonds' updates (refits, the matrix-free operator's data) and the
