@@ -273,60 +273,33 @@ namespace pdfem
     } // namespace
 
     template <int dim>
+    template <typename U>
     void
-    PDLSMEnergy<dim>::family_forces(const std::size_t            o,
-                                    const NodalField<dim>       &u,
-                                    std::vector<Tensor<1, dim>> &f) const
+    PDLSMEnergy<dim>::weights_forces(const FamilyWeights         &weights,
+                                     const double                 V,
+                                     const U                     &u_of,
+                                     std::vector<Tensor<1, dim>> &f) const
     {
       // f_a = V_k sigma_k g_a (strain energy) + G_s V_k sum_i beta_i C_ia
       // z_i (stabilisation), z_i = u_mi - u_k - H xi_i, H = sum_a u_a (x)
-      // g_a, C_ia = [a = m_i] - [a = k] - g_a . xi_i. Condensed: f = K' u.
-      if (const CondensedFamily *c = condensed[o].get())
-        {
-          // f_a = sum_b K_ab u_b from the upper triangle: K_ab u_b into
-          // f_a and K_ab^T u_a into f_b.
-          const PD::Families &fam  = *this->region.families;
-          const std::size_t   n    = c->size();
-          const auto          node = [&](const std::size_t a) {
-            return a == 0 ? fam.owners[o] : fam.members[c->bonds[a - 1]];
-          };
-          std::vector<Tensor<1, dim>> &u_nodes = f;
-          u_nodes.resize(n);
-          for (std::size_t a = 0; a < n; ++a)
-            u_nodes[a] = u[node(a)];
-          std::vector<Tensor<1, dim>> sum(n);
-          const Tensor<2, dim>       *K = c->K.data();
-          for (std::size_t a = 0; a < n; ++a)
-            {
-              const Tensor<1, dim> u_a = u_nodes[a];
-              Tensor<1, dim>       f_a = *K++ * u_a;
-              for (std::size_t b = a + 1; b < n; ++b, ++K)
-                {
-                  f_a += *K * u_nodes[b];
-                  sum[b] += u_a * *K; // K_ab^T u_a
-                }
-              sum[a] += f_a;
-            }
-          f.swap(sum);
-          return;
-        }
-      const auto [nodes, g, bond_vector, beta] = family_weights(o);
-      const std::size_t    n                   = nodes.size();
-      const double         V     = (*this->region.pd_volume)[nodes[0]];
-      const Tensor<2, dim> H     = family_gradient(nodes, g, u);
+      // g_a, C_ia = [a = m_i] - [a = k] - g_a . xi_i.
+      const auto &[nodes, g, bond_vector, beta] = weights;
+      const std::size_t n                       = nodes.size();
+      Tensor<2, dim>    H;
+      for (std::size_t a = 0; a < n; ++a)
+        H += outer_product(u_of(a), g[a]);
       const Tensor<2, dim> sigma = pdlsm->stress(H);
       f.resize(n);
       for (std::size_t a = 0; a < n; ++a)
         f[a] = V * (sigma * g[a]);
       if (stabilisation > 0.)
         {
-          const double   G   = stabilisation * this->region.mu * V;
-          const auto     u_k = u[nodes[0]];
-          Tensor<2, dim> Q; // sum_i beta_i z_i (x) xi_i
+          const double         G   = stabilisation * this->region.mu * V;
+          const Tensor<1, dim> u_k = u_of(0);
+          Tensor<2, dim>       Q; // sum_i beta_i z_i (x) xi_i
           for (std::size_t i = 0; i + 1 < n; ++i)
             {
-              const Tensor<1, dim> z =
-                u[nodes[i + 1]] - u_k - H * bond_vector[i];
+              const Tensor<1, dim> z = u_of(i + 1) - u_k - H * bond_vector[i];
               f[i + 1] += G * beta[i] * z;
               f[0] -= G * beta[i] * z;
               Q += beta[i] * outer_product(z, bond_vector[i]);
@@ -338,23 +311,60 @@ namespace pdfem
 
     template <int dim>
     void
+    PDLSMEnergy<dim>::family_forces(const std::size_t            o,
+                                    const NodalField<dim>       &u,
+                                    std::vector<Tensor<1, dim>> &f) const
+    {
+      const CondensedFamily *c = condensed[o].get();
+      if (c == nullptr)
+        {
+          const FamilyWeights weights = family_weights(o);
+          weights_forces(
+            weights,
+            (*this->region.pd_volume)[weights.nodes[0]],
+            [&](const std::size_t a) { return u[weights.nodes[a]]; },
+            f);
+          return;
+        }
+      // Condensed: y = K [u_r; 0], u_L = -K_LL^+ y_L, f = (K [u_r; u_L])_r.
+      const std::vector<unsigned int> &nodes = c->original.nodes;
+      std::vector<Tensor<1, dim>>      u0(nodes.size()), y;
+      for (const std::size_t a : c->kept)
+        u0[a] = u[nodes[a]];
+      const auto        local = [&](const std::size_t a) { return u0[a]; };
+      const std::size_t m     = dim * c->lost.size();
+      if (m > 0)
+        {
+          weights_forces(c->original, c->volume, local, y);
+          for (std::size_t r = 0; r < m; ++r)
+            {
+              double s = 0.;
+              for (std::size_t q = 0; q < m; ++q)
+                s += c->lost_inverse[r * m + q] * y[c->lost[q / dim]][q % dim];
+              u0[c->lost[r / dim]][r % dim] = -s;
+            }
+        }
+      weights_forces(c->original, c->volume, local, y);
+      f.resize(c->kept.size());
+      for (std::size_t a = 0; a < c->kept.size(); ++a)
+        f[a] = y[c->kept[a]];
+    }
+
+    template <int dim>
+    void
     PDLSMEnergy<dim>::family_tangent(const std::size_t o,
                                      const NodalField<dim> &,
                                      std::vector<Tensor<2, dim>> &K) const
     {
       if (const CondensedFamily *c = condensed[o].get())
         {
-          const std::size_t n = c->size();
-          K.resize(n * n);
-          for (std::size_t a = 0; a < n; ++a)
-            for (std::size_t b = 0; b < n; ++b)
-              K[a * n + b] = c->block(a, b);
+          condensed_tangent(*c, K);
+          return;
         }
-      else
-        weights_tangent(
-          family_weights(o),
-          (*this->region.pd_volume)[(*this->region.families).owners[o]],
-          K);
+      weights_tangent(
+        family_weights(o),
+        (*this->region.pd_volume)[(*this->region.families).owners[o]],
+        K);
     }
 
     template <int dim>
@@ -414,82 +424,94 @@ namespace pdfem
     void
     PDLSMEnergy<dim>::condense(const std::size_t o)
     {
-      // The stiffness before this break: from the weights of the last fit
-      // the first time, else the one condensed before.
+      // The first time: the energy of the weights of the last fit, all
+      // its nodes kept.
       const PD::Families &f = *this->region.families;
       if (!condensed[o])
         {
-          auto c = std::make_unique<CondensedFamily>();
+          auto c      = std::make_unique<CondensedFamily>();
+          c->original = family_weights(o);
+          c->volume   = (*this->region.pd_volume)[f.owners[o]];
           for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
             if (in_fit[j])
-              c->bonds.push_back(j);
-          std::vector<Tensor<2, dim>> full;
-          weights_tangent(family_weights(o),
-                          (*this->region.pd_volume)[f.owners[o]],
-                          full);
-          const std::size_t n = c->size();
-          for (std::size_t a = 0; a < n; ++a)
-            for (std::size_t b = a; b < n; ++b)
-              c->K.push_back(full[a * n + b]);
+              c->original_bonds.push_back(j);
+          c->bonds = c->original_bonds;
+          for (std::size_t a = 0; a < c->original.nodes.size(); ++a)
+            c->kept.push_back(a);
           condensed[o] = std::move(c);
         }
       CondensedFamily         &c = *condensed[o];
-      std::vector<std::size_t> keep{0}, lost;
-      for (std::size_t i = 0; i < c.bonds.size(); ++i)
-        (f.intact[c.bonds[i]] ? keep : lost).push_back(i + 1);
-      if (lost.empty())
-        return;
-
-      // K' = K_rr - K_rb K_bb^+ K_br, K_bb^+ the pseudo-inverse (K_bb is
-      // positive semi-definite; singular without stabilisation).
-      const std::size_t        nr = keep.size(), nl = lost.size();
-      LAPACKFullMatrix<double> K_bb(dim * nl, dim * nl);
-      FullMatrix<double>       K_br(dim * nl, dim * nr), X(dim * nl, dim * nr);
-      for (std::size_t a = 0; a < nl; ++a)
-        for (unsigned int i = 0; i < dim; ++i)
-          {
-            for (std::size_t b = 0; b < nl; ++b)
-              for (unsigned int j = 0; j < dim; ++j)
-                K_bb(dim * a + i, dim * b + j) =
-                  c.block(lost[a], lost[b])[i][j];
-            for (std::size_t b = 0; b < nr; ++b)
-              for (unsigned int j = 0; j < dim; ++j)
-                K_br(dim * a + i, dim * b + j) =
-                  c.block(lost[a], keep[b])[i][j];
-          }
-      // X = K_bb^+ K_br column by column (vmult is what applies the
-      // pseudo-inverse of the SVD state).
-      K_bb.compute_inverse_svd(1e-12);
-      Vector<double> column(dim * nl), solved(dim * nl);
-      for (std::size_t b = 0; b < dim * nr; ++b)
+      std::vector<std::size_t> kept{0};
+      for (std::size_t i = 1; i < c.kept.size(); ++i)
         {
-          for (std::size_t l = 0; l < dim * nl; ++l)
-            column[l] = K_br(l, b);
-          K_bb.vmult(solved, column);
-          for (std::size_t l = 0; l < dim * nl; ++l)
-            X(l, b) = solved[l];
+          const std::size_t a = c.kept[i];
+          (f.intact[c.original_bonds[a - 1]] ? kept : c.lost).push_back(a);
         }
-      // the upper triangle of K' (symmetric; its round-off asymmetry is
-      // not kept; K_rb K_bb^+ K_br = K_br^T X by one matrix product:
-      // deal.II hands it to BLAS)
-      FullMatrix<double> correction(dim * nr, dim * nr);
-      K_br.Tmmult(correction, X);
+      if (kept.size() == c.kept.size())
+        return;
+      c.kept.swap(kept);
+      c.bonds.clear();
+      for (std::size_t i = 1; i < c.kept.size(); ++i)
+        c.bonds.push_back(c.original_bonds[c.kept[i] - 1]);
+
+      // K_LL^+ over all the lost members (K_LL is positive semi-definite;
+      // singular without stabilisation): the SVD's pseudo-inverse applied
+      // to the unit vectors.
       std::vector<Tensor<2, dim>> K;
-      K.reserve(nr * (nr + 1) / 2);
+      weights_tangent(c.original, c.volume, K);
+      const std::size_t        n0 = c.original.nodes.size();
+      const std::size_t        m  = dim * c.lost.size();
+      LAPACKFullMatrix<double> K_LL(m, m);
+      for (std::size_t r = 0; r < m; ++r)
+        for (std::size_t q = 0; q < m; ++q)
+          K_LL(r, q) =
+            K[c.lost[r / dim] * n0 + c.lost[q / dim]][r % dim][q % dim];
+      K_LL.compute_inverse_svd(1e-12);
+      Vector<double> unit(m), column(m);
+      c.lost_inverse.assign(m * m, 0.);
+      for (std::size_t q = 0; q < m; ++q)
+        {
+          unit    = 0.;
+          unit[q] = 1.;
+          K_LL.vmult(column, unit);
+          for (std::size_t r = 0; r < m; ++r)
+            c.lost_inverse[r * m + q] = column[r];
+        }
+    }
+
+    template <int dim>
+    void
+    PDLSMEnergy<dim>::condensed_tangent(const CondensedFamily       &c,
+                                        std::vector<Tensor<2, dim>> &K) const
+    {
+      // K' = K_rr - K_rL K_LL^+ K_Lr, the correction by BLAS products.
+      std::vector<Tensor<2, dim>> K0;
+      weights_tangent(c.original, c.volume, K0);
+      const std::size_t  n0 = c.original.nodes.size(), nr = c.kept.size();
+      const std::size_t  m = dim * c.lost.size();
+      FullMatrix<double> correction(dim * nr, dim * nr);
+      if (m > 0)
+        {
+          FullMatrix<double> K_Lr(m, dim * nr), P(m, m), X(m, dim * nr);
+          for (std::size_t r = 0; r < m; ++r)
+            {
+              for (std::size_t q = 0; q < m; ++q)
+                P(r, q) = c.lost_inverse[r * m + q];
+              for (std::size_t b = 0; b < nr; ++b)
+                for (unsigned int j = 0; j < dim; ++j)
+                  K_Lr(r, dim * b + j) =
+                    K0[c.lost[r / dim] * n0 + c.kept[b]][r % dim][j];
+            }
+          P.mmult(X, K_Lr);
+          K_Lr.Tmmult(correction, X);
+        }
+      K.resize(nr * nr);
       for (std::size_t a = 0; a < nr; ++a)
-        for (std::size_t b = a; b < nr; ++b)
-          {
-            Tensor<2, dim> B = c.block(keep[a], keep[b]);
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
-                B[i][j] -= correction(dim * a + i, dim * b + j);
-            K.push_back(B);
-          }
-      c.K.swap(K);
-      std::vector<std::size_t> bonds;
-      for (std::size_t a = 1; a < nr; ++a)
-        bonds.push_back(c.bonds[keep[a] - 1]);
-      c.bonds.swap(bonds);
+        for (std::size_t b = 0; b < nr; ++b)
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              K[a * nr + b][i][j] = K0[c.kept[a] * n0 + c.kept[b]][i][j] -
+                                    correction(dim * a + i, dim * b + j);
     }
 
     template <int dim>

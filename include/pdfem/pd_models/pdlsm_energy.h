@@ -144,40 +144,43 @@ namespace pdfem
       /// Schur complement; the first time from its weights).
       void
       condense(std::size_t o);
-      /// A family condensed by condense(): its energy's nodes (the owner,
-      /// then its members' bond indices) and stiffness blocks K_ab, a <= b
-      /// (K is symmetric, K_ba = K_ab^T): row a's blocks from index
-      /// a (2 n - a + 1) / 2, n the number of nodes. Half the memory and
-      /// the memory traffic of the full n x n blocks, which the products
-      /// of a 3D growth run streamed (n ~ 200 members: 2.9 MB a family).
+      /**
+       * A family condensed by condense(). Schur complements compose (the
+       * complement of K's complement over b_1 taken over b_2 is K's over
+       * b_1 and b_2), so the family keeps the energy of its weights before
+       * the first break, K (@p original, its volume), and the pseudo-
+       * inverse of K_LL over all the members it lost, and applies
+       * K' = K_rr - K_rL K_LL^+ K_Lr as y = K [u_r; 0], u_L = -K_LL^+ y_L,
+       * f = (K [u_r; u_L])_r: two products with the weights and one with a
+       * dim |L| square matrix, instead of the n^2 dense blocks of K' (n ~
+       * 200 in 3D, |L| ~ 10 a break: 1.5 MB a family).
+       */
       struct CondensedFamily
       {
-        std::vector<std::size_t>            bonds;
-        std::vector<dealii::Tensor<2, dim>> K;
-
-        /// The number of nodes, n = bonds + 1.
-        std::size_t
-        size() const
-        {
-          return bonds.size() + 1;
-        }
-
-        /// Index of block (a, b), a <= b, in K.
-        static std::size_t
-        packed(const std::size_t a, const std::size_t b, const std::size_t n)
-        {
-          return a * (2 * n - a + 1) / 2 + (b - a);
-        }
-
-        /// Block (a, b) for any a, b.
-        dealii::Tensor<2, dim>
-        block(const std::size_t a, const std::size_t b) const
-        {
-          const std::size_t n = size();
-          return a <= b ? K[packed(a, b, n)] :
-                          dealii::transpose(K[packed(b, a, n)]);
-        }
+        /// The family's nodes' indices in original.nodes: kept (the owner
+        /// first, increasing) and lost; the bonds of the kept members.
+        std::vector<std::size_t> kept, lost, bonds;
+        /// The bonds of original.nodes[1..].
+        std::vector<std::size_t> original_bonds;
+        FamilyWeights            original;
+        double                   volume = 0.;
+        /// K_LL^+, dim |lost| square, row major.
+        std::vector<double> lost_inverse;
       };
+
+      /// K' of a condensed family, n_r^2 blocks (kept nodes).
+      void
+      condensed_tangent(const CondensedFamily               &c,
+                        std::vector<dealii::Tensor<2, dim>> &K) const;
+
+      /// f = K u over @p weights' nodes, u_of(a) the displacement of node
+      /// a of weights.nodes, family volume @p V.
+      template <typename U>
+      void
+      weights_forces(const FamilyWeights                 &weights,
+                     double                               V,
+                     const U                             &u_of,
+                     std::vector<dealii::Tensor<1, dim>> &f) const;
 
       double                      weight_factor   = 0.33;
       bool                        quadratic_fit   = false;
