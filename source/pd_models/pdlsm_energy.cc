@@ -369,9 +369,11 @@ namespace pdfem
 
     template <int dim>
     void
-    PDLSMEnergy<dim>::weights_tangent(const FamilyWeights         &weights,
-                                      const double                 V,
-                                      std::vector<Tensor<2, dim>> &K) const
+    PDLSMEnergy<dim>::weights_tangent(
+      const FamilyWeights            &weights,
+      const double                    V,
+      std::vector<Tensor<2, dim>>    &K,
+      const std::vector<std::size_t> *subset) const
     {
       // Strain energy: K_ab(i, j) = V (lambda g_a,i g_b,j + mu (delta_ij
       // g_a . g_b + g_a,j g_b,i)). Stabilisation: G_s V (C^T beta C)_ab I
@@ -381,12 +383,17 @@ namespace pdfem
       const auto &[nodes, g, bond_vector, beta] = weights;
       const std::size_t n                       = nodes.size();
       const double      lambda = this->region.lambda, mu = this->region.mu;
-      K.assign(n * n, Tensor<2, dim>());
-      for (std::size_t a = 0; a < n; ++a)
-        for (std::size_t b = 0; b < n; ++b)
+      const std::size_t m    = subset ? subset->size() : n;
+      const auto        node = [&](const std::size_t i) {
+        return subset ? (*subset)[i] : i;
+      };
+      K.assign(m * m, Tensor<2, dim>());
+      for (std::size_t ia = 0; ia < m; ++ia)
+        for (std::size_t ib = 0; ib < m; ++ib)
           {
-            Tensor<2, dim> &B  = K[a * n + b];
-            const double    gg = g[a] * g[b];
+            const std::size_t a = node(ia), b = node(ib);
+            Tensor<2, dim>   &B  = K[ia * m + ib];
+            const double      gg = g[a] * g[b];
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = 0; j < dim; ++j)
                 B[i][j] = V * (lambda * g[a][i] * g[b][j] +
@@ -405,9 +412,10 @@ namespace pdfem
           M += beta[i] * outer_product(bond_vector[i], bond_vector[i]);
           beta_sum += beta[i];
         }
-      for (std::size_t a = 0; a < n; ++a)
-        for (std::size_t b = 0; b < n; ++b)
+      for (std::size_t ia = 0; ia < m; ++ia)
+        for (std::size_t ib = 0; ib < m; ++ib)
           {
+            const std::size_t a = node(ia), b = node(ib);
             double s = -(p[a] * g[b]) - (p[b] * g[a]) + g[a] * (M * g[b]);
             if (a == b)
               s += a == 0 ? beta_sum : beta[a - 1];
@@ -416,7 +424,7 @@ namespace pdfem
             else if (b == 0)
               s -= beta[a - 1];
             for (unsigned int i = 0; i < dim; ++i)
-              K[a * n + b][i][i] += G * s;
+              K[ia * m + ib][i][i] += G * s;
           }
     }
 
@@ -458,14 +466,12 @@ namespace pdfem
       // singular without stabilisation): the SVD's pseudo-inverse applied
       // to the unit vectors.
       std::vector<Tensor<2, dim>> K;
-      weights_tangent(c.original, c.volume, K);
-      const std::size_t        n0 = c.original.nodes.size();
-      const std::size_t        m  = dim * c.lost.size();
+      weights_tangent(c.original, c.volume, K, &c.lost);
+      const std::size_t        nl = c.lost.size(), m = dim * nl;
       LAPACKFullMatrix<double> K_LL(m, m);
       for (std::size_t r = 0; r < m; ++r)
         for (std::size_t q = 0; q < m; ++q)
-          K_LL(r, q) =
-            K[c.lost[r / dim] * n0 + c.lost[q / dim]][r % dim][q % dim];
+          K_LL(r, q) = K[(r / dim) * nl + q / dim][r % dim][q % dim];
       K_LL.compute_inverse_svd(1e-12);
       Vector<double> unit(m), column(m);
       c.lost_inverse.assign(m * m, 0.);

@@ -135,11 +135,14 @@ namespace pdfem
       FamilyWeights
       family_weights(std::size_t o) const;
       /// The stiffness of the energy of @p weights (blocks[a n + b], n
-      /// nodes), family volume @p V.
+      /// nodes), family volume @p V; with @p subset only the blocks of
+      /// those nodes (blocks[i m + j] for nodes subset[i], subset[j], m
+      /// of them).
       void
       weights_tangent(const FamilyWeights                 &weights,
                       double                               V,
-                      std::vector<dealii::Tensor<2, dim>> &K) const;
+                      std::vector<dealii::Tensor<2, dim>> &K,
+                      const std::vector<std::size_t> *subset = nullptr) const;
       /// Condense the members family @p o lost out of its stiffness (the
       /// Schur complement; the first time from its weights).
       void
