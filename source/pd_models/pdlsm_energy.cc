@@ -258,16 +258,14 @@ namespace pdfem
 
     namespace
     {
-      /// H = sum_a u_a (x) g_a over a family's nodes.
-      template <int dim>
+      /// H = sum_a u_a (x) g_a over a family's nodes, u_a = u_of(a).
+      template <int dim, typename U>
       Tensor<2, dim>
-      family_gradient(const std::vector<unsigned int>   &nodes,
-                      const std::vector<Tensor<1, dim>> &g,
-                      const NodalField<dim>             &u)
+      family_gradient(const std::vector<Tensor<1, dim>> &g, const U &u_of)
       {
         Tensor<2, dim> H;
-        for (std::size_t a = 0; a < nodes.size(); ++a)
-          H += outer_product(u[nodes[a]], g[a]);
+        for (std::size_t a = 0; a < g.size(); ++a)
+          H += outer_product(u_of(a), g[a]);
         return H;
       }
     } // namespace
@@ -284,11 +282,9 @@ namespace pdfem
       // z_i (stabilisation), z_i = u_mi - u_k - H xi_i, H = sum_a u_a (x)
       // g_a, C_ia = [a = m_i] - [a = k] - g_a . xi_i.
       const auto &[nodes, g, bond_vector, beta] = weights;
-      const std::size_t n                       = nodes.size();
-      Tensor<2, dim>    H;
-      for (std::size_t a = 0; a < n; ++a)
-        H += outer_product(u_of(a), g[a]);
-      const Tensor<2, dim> sigma = pdlsm->stress(H);
+      const std::size_t    n                    = nodes.size();
+      const Tensor<2, dim> H                    = family_gradient(g, u_of);
+      const Tensor<2, dim> sigma                = pdlsm->stress(H);
       f.resize(n);
       for (std::size_t a = 0; a < n; ++a)
         f[a] = V * (sigma * g[a]);
@@ -443,7 +439,6 @@ namespace pdfem
           for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
             if (in_fit[j])
               c->original_bonds.push_back(j);
-          c->bonds = c->original_bonds;
           for (std::size_t a = 0; a < c->original.nodes.size(); ++a)
             c->kept.push_back(a);
           condensed[o] = std::move(c);
@@ -458,9 +453,6 @@ namespace pdfem
       if (kept.size() == c.kept.size())
         return;
       c.kept.swap(kept);
-      c.bonds.clear();
-      for (std::size_t i = 1; i < c.kept.size(); ++i)
-        c.bonds.push_back(c.original_bonds[c.kept[i] - 1]);
 
       // K_LL^+ over all the lost members (K_LL is positive semi-definite;
       // singular without stabilisation): the SVD's pseudo-inverse applied
@@ -526,7 +518,8 @@ namespace pdfem
                                             const NodalField<dim> &u) const
     {
       const auto [nodes, g, bond_vector, beta] = family_weights(o);
-      return family_gradient(nodes, g, u);
+      return family_gradient(g,
+                             [&](const std::size_t a) { return u[nodes[a]]; });
     }
 
     template <int dim>

@@ -161,8 +161,9 @@ namespace pdfem
       struct CondensedFamily
       {
         /// The family's nodes' indices in original.nodes: kept (the owner
-        /// first, increasing) and lost; the bonds of the kept members.
-        std::vector<std::size_t> kept, lost, bonds;
+        /// first, increasing: the owner and its intact bonds in family
+        /// order) and lost.
+        std::vector<std::size_t> kept, lost;
         /// The bonds of original.nodes[1..].
         std::vector<std::size_t> original_bonds;
         FamilyWeights            original;
