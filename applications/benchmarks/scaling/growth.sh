@@ -50,21 +50,19 @@ PY
 for n in ${SIZES_2D:-100 200 400 720}; do run 2 "$n"; done
 for n in ${SIZES_3D:-20 40 60 80 96}; do run 3 "$n"; done
 
-python3 - "$csv" "$out/scaling_growth_fit.csv" << 'PY'
-import csv, math, sys
+python3 - "$csv" "$out/scaling_growth_fit.csv" "$here" << 'PY'
+import csv, sys
+sys.path.insert(0, sys.argv[3])
+from loglog import exponent, large
 rows = list(csv.DictReader(open(sys.argv[1])))
 with open(sys.argv[2], "w") as out:
     out.write("dim,quantity,exponent,sizes,smallest_dofs,largest_dofs\n")
     for dim in ("2", "3"):
-        big = [r for r in rows if r["dim"] == dim and float(r["dofs"]) >= 5e4]
+        big = large(rows, dim)
         if len(big) < 2:
             continue
-        x = [math.log(float(r["dofs"])) for r in big]
         for q in ("step_s", "gmres_iterations", "peak_mb"):
-            y = [math.log(max(float(r[q]), 1e-9)) for r in big]
-            mx, my = sum(x) / len(x), sum(y) / len(y)
-            b = sum((a - mx) * (c - my) for a, c in zip(x, y)) / sum((a - mx) ** 2 for a in x)
-            line = "%s,%s,%.3f,%d,%s,%s" % (dim, q, b, len(big), big[0]["dofs"], big[-1]["dofs"])
+            line = "%s,%s,%.3f,%d,%s,%s" % (dim, q, exponent(big, q), len(big), big[0]["dofs"], big[-1]["dofs"])
             out.write(line + "\n")
             print(line)
 PY

@@ -59,9 +59,11 @@ for n in $sizes_2d; do run 2 "$n"; done
 for n in $sizes_3d; do run 3 "$n"; done
 for n in ${SIZES_EXPLICIT:-20 40 60 80}; do run_explicit "$n"; done
 
-# Least-squares exponents over the sizes from 5e4 DoFs on (below, fixed costs still show).
-python3 - "$csv" "$out/scaling_fit.csv" "$explicit_csv" << 'PY'
-import csv, math, sys
+# Least-squares exponents over the sizes from 5e4 DoFs on (loglog.py).
+python3 - "$csv" "$out/scaling_fit.csv" "$explicit_csv" "$here" << 'PY'
+import csv, sys
+sys.path.insert(0, sys.argv[4])
+from loglog import exponent, large
 rows = list(csv.DictReader(open(sys.argv[1])))
 for r in csv.DictReader(open(sys.argv[3])):  # explicit steps: dim "3x"
     rows.append({"dim": "3x", "dofs": r["dofs"], "bonds": r["bonds"], "setup_s": r["setup_s"],
@@ -71,22 +73,19 @@ with open(sys.argv[2], "w") as out:
     # dim 3x: the explicit steps on the 3D box
     out.write("dim,quantity,exponent,sizes,smallest_dofs,largest_dofs,bytes_per_dof_largest,bytes_per_bond_largest\n")
     for dim in ("2", "3", "3x"):
-        big = [r for r in rows if r["dim"] == dim and float(r["dofs"]) >= 5e4]
+        big = large(rows, dim)
         if len(big) < 2:
             continue
-        x = [math.log(float(r["dofs"])) for r in big]
         quantities = ("setup_s", "solve_s", "compute_s", "peak_mb", "gmres_iterations")
         if dim == "3x":
             quantities = ("solve_s", "peak_mb")  # solve_s: seconds per explicit step
         for q in quantities:
-            y = [math.log(max(float(r[q]), 1e-9)) for r in big]
-            mx, my = sum(x) / len(x), sum(y) / len(y)
-            b = sum((a - mx) * (c - my) for a, c in zip(x, y)) / sum((a - mx) ** 2 for a in x)
             last = big[-1]
             mb = float(last["peak_mb"]) * 2**20
             name = "seconds_per_step" if dim == "3x" and q == "solve_s" else q
-            line = "%s,%s,%.3f,%d,%s,%s,%.0f,%.0f" % (dim, name, b, len(big), big[0]["dofs"], last["dofs"],
-                                                    mb / float(last["dofs"]), mb / float(last["bonds"]))
+            line = "%s,%s,%.3f,%d,%s,%s,%.0f,%.0f" % (dim, name, exponent(big, q), len(big), big[0]["dofs"],
+                                                    last["dofs"], mb / float(last["dofs"]),
+                                                    mb / float(last["bonds"]))
             out.write(line + "\n")
             print(line)
 PY
