@@ -60,31 +60,9 @@ namespace pdfem
           // 9.6 s run). The margin, 1e-9 of the extents, is far above the
           // exact tests' tolerances. Owners in chunks on the threads; each
           // owner writes its own bonds only.
-          using Box = std::pair<Point<dim>, Point<dim>>;
-          std::vector<Box> boxes;
+          std::vector<Mesh::Box<dim>> boxes;
           for (const auto &crack : cracks)
-            {
-              Point<dim> lo = crack.points[0], hi = lo;
-              for (const auto &p : crack.points)
-                for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    lo[d] = std::min(lo[d], p[d]);
-                    hi[d] = std::max(hi[d], p[d]);
-                  }
-              boxes.emplace_back(lo, hi);
-            }
-          const auto overlap = [&](const Box &x, const Box &c, double reach) {
-            double extent = 0.;
-            for (unsigned int d = 0; d < dim; ++d)
-              extent = std::max(
-                {extent, x.second[d] - x.first[d], c.second[d] - c.first[d]});
-            reach += 1e-9 * extent;
-            for (unsigned int d = 0; d < dim; ++d)
-              if (x.first[d] > c.second[d] + reach ||
-                  x.second[d] < c.first[d] - reach)
-                return false;
-            return true;
-          };
+            boxes.push_back(crack.bounding_box());
           PD::Families &f = s.families;
           // The bonds of family o that a crack cuts, broken; their number.
           const auto cut_family = [&](const std::size_t          o,
@@ -94,7 +72,9 @@ namespace pdfem
               return 0ul;
             near.clear();
             for (unsigned int c = 0; c < cracks.size(); ++c)
-              if (overlap(Box(s.x[k], s.x[k]), boxes[c], 2. * s.horizon[k]))
+              if (Mesh::boxes_meet(Mesh::segment_box(s.x[k], s.x[k]),
+                                   boxes[c],
+                                   2. * s.horizon[k]))
                 near.push_back(c);
             unsigned long cut = 0;
             for (std::size_t b = f.offsets[o];
@@ -104,14 +84,9 @@ namespace pdfem
                 const unsigned int m = f.members[b];
                 if (!f.intact[b] || s.no_fail[m])
                   continue;
-                Box bond;
-                for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    bond.first[d]  = std::min(s.x[k][d], s.x[m][d]);
-                    bond.second[d] = std::max(s.x[k][d], s.x[m][d]);
-                  }
+                const Mesh::Box<dim> bond = Mesh::segment_box(s.x[k], s.x[m]);
                 for (const unsigned int c : near)
-                  if (overlap(bond, boxes[c], 0.) &&
+                  if (Mesh::boxes_meet(bond, boxes[c]) &&
                       cracks[c].cuts(s.x[k], s.x[m]))
                     {
                       f.intact[b] = 0;

@@ -61,27 +61,6 @@ namespace pdfem
                              const Point<3> &p1,
                              const Point<3> &p2)
       {
-        // Bounding boxes first: most of a growth step's tests (every bond
-        // near a cluster of 12-triangle discs against each triangle) end
-        // here, without the normal's square roots. The margin, 1e-9 of the
-        // extents, is far above the tolerances below, so this rejects only
-        // pairs the exact test rejects too.
-        {
-          double extent = 0.;
-          double lo[3], hi[3], tlo[3], thi[3];
-          for (unsigned int d = 0; d < 3; ++d)
-            {
-              lo[d]  = std::min(a[d], b[d]);
-              hi[d]  = std::max(a[d], b[d]);
-              tlo[d] = std::min({p0[d], p1[d], p2[d]});
-              thi[d] = std::max({p0[d], p1[d], p2[d]});
-              extent = std::max({extent, hi[d] - lo[d], thi[d] - tlo[d]});
-            }
-          const double margin = 1e-9 * extent;
-          for (unsigned int d = 0; d < 3; ++d)
-            if (lo[d] > thi[d] + margin || hi[d] < tlo[d] - margin)
-              return false;
-        }
         const Tensor<1, 3> e1  = p1 - p0;
         const Tensor<1, 3> e2  = p2 - p0;
         const Tensor<1, 3> n   = dealii::cross_product_3d(e1, e2);
@@ -121,7 +100,11 @@ namespace pdfem
     bool
     Crack<3>::cuts(const Point<3> &a, const Point<3> &b) const
     {
-      return segment_meets_triangle(a, b, points[0], points[1], points[2]);
+      // Bounding boxes first: most of a growth step's tests (every bond
+      // near a cluster of 12-triangle discs against each triangle) end
+      // here, without the normal's square roots.
+      return boxes_meet(segment_box(a, b), bounding_box()) &&
+             segment_meets_triangle(a, b, points[0], points[1], points[2]);
     }
 
     template <int dim>
@@ -152,12 +135,14 @@ namespace pdfem
       return false;
     }
 
-#define INSTANTIATE(dim)                                         \
-  template struct Crack<dim>;                                    \
-  template std::vector<Crack<dim>> make_cracks<dim>(             \
-    const std::vector<std::vector<std::array<double, 3>>> &);    \
-  template bool cut_by_any<dim>(const std::vector<Crack<dim>> &, \
-                                const Point<dim> &,              \
+#define INSTANTIATE(dim)                                                         \
+  template struct Crack<dim>;                                                    \
+  template Box<dim> segment_box<dim>(const Point<dim> &, const Point<dim> &);    \
+  template bool     boxes_meet<dim>(const Box<dim> &, const Box<dim> &, double); \
+  template std::vector<Crack<dim>> make_cracks<dim>(                             \
+    const std::vector<std::vector<std::array<double, 3>>> &);                    \
+  template bool cut_by_any<dim>(const std::vector<Crack<dim>> &,                 \
+                                const Point<dim> &,                              \
                                 const Point<dim> &);
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
