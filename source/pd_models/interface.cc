@@ -4,6 +4,7 @@
 #include <pdfem/pd/families.h>
 #include <pdfem/pd_models/interface.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -115,6 +116,22 @@ namespace pdfem
                                    std::vector<dealii::Tensor<2, dim>> &) const
     {
       not_provided("family_tangent()", "row");
+    }
+
+    template <int dim>
+    void
+    Interface<dim>::family_diagonal_blocks(
+      const std::size_t                    o,
+      const NodalField<dim>               &u,
+      std::vector<dealii::Tensor<2, dim>> &blocks) const
+    {
+      std::vector<dealii::Tensor<2, dim>> tangent;
+      family_tangent(o, u, tangent);
+      const auto n = static_cast<std::size_t>(
+        std::lround(std::sqrt(double(tangent.size()))));
+      blocks.resize(n);
+      for (std::size_t a = 0; a < n; ++a)
+        blocks[a] = tangent[a * n + a];
     }
 
 #define INSTANTIATE(dim)                                                       \

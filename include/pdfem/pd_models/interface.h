@@ -348,6 +348,17 @@ namespace pdfem
                      const NodalField<dim>               &u,
                      std::vector<dealii::Tensor<2, dim>> &blocks) const;
 
+      /**
+       * With Layout::family_elements: the diagonal blocks of
+       * family_tangent(), blocks[a] = d f_a / d u_a (resized here), for a
+       * block-Jacobi preconditioner. The default extracts them from
+       * family_tangent(); a model overrides it where they cost less alone.
+       */
+      virtual void
+      family_diagonal_blocks(std::size_t                          o,
+                             const NodalField<dim>               &u,
+                             std::vector<dealii::Tensor<2, dim>> &blocks) const;
+
       /// The nonlocal displacement gradient grad u (component i, direction
       /// j) at owner @p o, for the nodal stress C : sym(grad u).
       virtual dealii::Tensor<2, dim>

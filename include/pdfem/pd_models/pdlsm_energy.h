@@ -104,6 +104,13 @@ namespace pdfem
                      const NodalField<dim>               &u,
                      std::vector<dealii::Tensor<2, dim>> &K) const override;
 
+      /// O(n) for an intact family (its tangent's diagonal blocks alone).
+      void
+      family_diagonal_blocks(
+        std::size_t                          o,
+        const NodalField<dim>               &u,
+        std::vector<dealii::Tensor<2, dim>> &D) const override;
+
       dealii::Tensor<2, dim>
       displacement_gradient(std::size_t            o,
                             const NodalField<dim> &u) const override;
@@ -134,15 +141,17 @@ namespace pdfem
       /// Family @p o's FamilyWeights.
       FamilyWeights
       family_weights(std::size_t o) const;
-      /// The stiffness of the energy of @p weights (blocks[a n + b], n
-      /// nodes), family volume @p V; with @p subset only the blocks of
-      /// those nodes (blocks[i m + j] for nodes subset[i], subset[j], m
-      /// of them).
+      /// Blocks of the stiffness of the energy of @p weights, family
+      /// volume @p V: K[i n_c + j] = K_ab for the nodes a = rows[i], b =
+      /// columns[j] (n_c columns; every node where a list is null), or
+      /// with @p diagonal K[i] = K_aa, a = rows[i].
       void
       weights_tangent(const FamilyWeights                 &weights,
                       double                               V,
                       std::vector<dealii::Tensor<2, dim>> &K,
-                      const std::vector<std::size_t> *subset = nullptr) const;
+                      const std::vector<std::size_t>      *rows    = nullptr,
+                      const std::vector<std::size_t>      *columns = nullptr,
+                      bool diagonal = false) const;
       /// Condense the members family @p o lost out of its stiffness (the
       /// Schur complement; the first time from its weights).
       void
@@ -172,10 +181,12 @@ namespace pdfem
         std::vector<double> lost_inverse;
       };
 
-      /// K' of a condensed family, n_r^2 blocks (kept nodes).
+      /// K' of a condensed family, n_r^2 blocks (kept nodes), or with
+      /// @p diagonal its n_r diagonal blocks.
       void
       condensed_tangent(const CondensedFamily               &c,
-                        std::vector<dealii::Tensor<2, dim>> &K) const;
+                        std::vector<dealii::Tensor<2, dim>> &K,
+                        bool diagonal = false) const;
 
       /// f = K u over @p weights' nodes, u_of(a) the displacement of node
       /// a of weights.nodes, family volume @p V.
