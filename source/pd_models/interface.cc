@@ -4,7 +4,6 @@
 #include <pdfem/pd/families.h>
 #include <pdfem/pd_models/interface.h>
 
-#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -125,10 +124,16 @@ namespace pdfem
       const NodalField<dim>               &u,
       std::vector<dealii::Tensor<2, dim>> &blocks) const
     {
+      // The owner and the intact members: (1 + intact)^2 tangent blocks.
+      const PD::Families &f = *region.families;
+      std::size_t         n = 1;
+      for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+        n += f.intact[j] ? 1 : 0;
       std::vector<dealii::Tensor<2, dim>> tangent;
       family_tangent(o, u, tangent);
-      const auto n = static_cast<std::size_t>(
-        std::lround(std::sqrt(double(tangent.size()))));
+      AssertThrow(tangent.size() == n * n,
+                  dealii::ExcMessage("a family-element PD model's tangent "
+                                     "must have (1 + intact bonds)^2 blocks"));
       blocks.resize(n);
       for (std::size_t a = 0; a < n; ++a)
         blocks[a] = tangent[a * n + a];
