@@ -268,23 +268,30 @@ namespace pdfem
             }
       }
       /// use(nodes, blocks) with family o's nodes (family_nodes()) and
-      /// its tangent blocks (family_tangent()) for every owner o that is
-      /// not decoupled, at @p field (family-element models).
+      /// its tangent blocks (family_tangent(), or with @p diagonal only
+      /// its diagonal blocks, family_diagonal_blocks()) for every owner o
+      /// that is not decoupled, at @p field (family-element models).
       template <typename Use>
       void
       for_each_family_tangent(const PDModels::NodalField<dim> &field,
-                              const Use                       &use) const
+                              const Use                       &use,
+                              const bool diagonal = false) const
       {
         std::vector<dealii::Tensor<2, dim>> blocks;
         for (std::size_t o = 0; o < families.owners.size(); ++o)
           if (!decoupled[o])
             {
-              model->family_tangent(o, field, blocks);
+              if (diagonal)
+                model->family_diagonal_blocks(o, field, blocks);
+              else
+                model->family_tangent(o, field, blocks);
               const std::vector<unsigned int> nodes = family_nodes(o);
-              AssertThrow(blocks.size() == nodes.size() * nodes.size(),
+              AssertThrow(blocks.size() ==
+                            nodes.size() * (diagonal ? 1 : nodes.size()),
                           dealii::ExcMessage(
                             "a family-element PD model's tangent must have "
-                            "(1 + intact bonds)^2 blocks"));
+                            "(1 + intact bonds)^2 blocks, and 1 + intact "
+                            "bonds diagonal blocks"));
               use(nodes, blocks);
             }
       }

@@ -299,20 +299,15 @@ namespace pdfem
           ghosted[j].reinit(owned, relevant, comm);
           g[j] = ghosted[j].trilinos_vector()[0];
         }
-      std::vector<Tensor<2, dim>> blocks;
-      for (std::size_t o = 0; o < families.owners.size(); ++o)
-        if (!decoupled[o])
-          {
-            model->family_diagonal_blocks(o, field, blocks);
-            const std::vector<unsigned int> nodes = family_nodes(o);
-            AssertThrow(blocks.size() == nodes.size(),
-                        ExcMessage("a family-element PD model must give one "
-                                   "diagonal block per node of a family"));
-            for (std::size_t a = 0; a < nodes.size(); ++a)
-              for (unsigned int i = 0; i < dim; ++i)
-                for (unsigned int j = 0; j < dim; ++j)
-                  g[j][relevant_lid[nodes[a]][i]] += blocks[a][i][j];
-          }
+      for_each_family_tangent(
+        field,
+        [&](const auto &nodes, const auto &blocks) {
+          for (std::size_t a = 0; a < nodes.size(); ++a)
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                g[j][relevant_lid[nodes[a]][i]] += blocks[a][i][j];
+        },
+        true);
       for (unsigned int j = 0; j < dim; ++j)
         {
           columns[j].reinit(owned, comm);
