@@ -68,9 +68,7 @@ with open(sys.argv[2], "w") as out:
 PY
 
 if [ -x "$plot" ] && command -v xvfb-run > /dev/null; then
-  for dim in 2 3; do
-    awk -F, -v d=$dim 'NR == 1 || $1 == d' "$csv" > "$work/growth_$dim.csv"
-  done
+  split_by_dim "$csv" growth
   xvfb-run -a "$plot" chart "$work/growth_3.csv" --x dofs --y step_s --logx --logy --points \
     --csv2 "$work/growth_2.csv" --label "3D (FC 2),2D (FC 1)" --xlabel "DoFs" \
     --ylabel "time per growth step [s]" --title "One quasi-static growth step, 40 % PD, one rank" \

@@ -17,3 +17,14 @@ run_scene() {
   "$pdfem" "$dir/$prm" --output "$dir/out" --quiet "$@"
   wall=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.2f", e - s }')
 }
+
+#   split_by_dim CSV PREFIX
+#
+# writes the rows of CSV whose first column is 2 and 3, each with the header, to
+# $work/PREFIX_2.csv and $work/PREFIX_3.csv (one curve each in the charts).
+split_by_dim() {
+  local dim
+  for dim in 2 3; do
+    awk -F, -v d=$dim 'NR == 1 || $1 == d' "$1" > "$work/$2_$dim.csv"
+  done
+}
