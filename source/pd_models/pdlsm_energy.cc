@@ -121,6 +121,7 @@ namespace pdfem
           const Tensor<1, dim> s = xi[i] / delta;
           bond_weight[bond[i]]   = std::exp(-(s * s) * inv_a2) * volume[i];
         }
+      set_stabilisation_weights(o);
       owner_weight[o] = Tensor<1, dim>();
       bool fitted     = false;
       if (quadratic_fit)
@@ -158,6 +159,32 @@ namespace pdfem
 
     template <int dim>
     void
+    PDLSMEnergy<dim>::set_stabilisation_weights(const std::size_t o)
+    {
+      // beta_i = w_i / (|xi_i|^2 sum w) over the bonds in the fit.
+      const PD::Families &f   = *this->region.families;
+      const auto         &x   = *this->region.position;
+      const unsigned int  k   = f.owners[o];
+      double              sum = 0.;
+      n_in_fit[o]             = 0;
+      for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+        {
+          stabilisation_weight[j] = 0.;
+          if (in_fit[j])
+            {
+              const Tensor<1, dim> bv = x[f.members[j]] - x[k];
+              stabilisation_weight[j] = bond_weight[j] / (bv * bv);
+              sum += bond_weight[j];
+              ++n_in_fit[o];
+            }
+        }
+      for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+        if (in_fit[j])
+          stabilisation_weight[j] /= sum;
+    }
+
+    template <int dim>
+    void
     PDLSMEnergy<dim>::initialize(const Region<dim> &r)
     {
       this->region = r;
@@ -166,6 +193,8 @@ namespace pdfem
       weight.assign(f.n_bonds(), Tensor<1, dim>());
       bond_weight.assign(f.n_bonds(), 0.);
       in_fit.assign(f.n_bonds(), 0);
+      stabilisation_weight.assign(f.n_bonds(), 0.);
+      n_in_fit.assign(f.owners.size(), 0);
       owner_weight.assign(f.owners.size(), Tensor<1, dim>());
       fitted.assign(f.owners.size(), 0);
       condensed.clear();
@@ -227,31 +256,29 @@ namespace pdfem
     PDLSMEnergy<dim>::family_weights(const std::size_t o) const
     {
       // The family's nodes (owner, intact members), their gradient
-      // weights, the bonds and the stabilisation weights beta_i = w_i /
-      // (|xi_i|^2 sum w) (normalised Gaussian weights, kept by fit()).
+      // weights, the bonds and the stabilisation weights, those of the
+      // last fit: the intact ones, or, in condense() before the refit,
+      // those before the break.
       const PD::Families &f = *this->region.families;
       const auto         &x = *this->region.position;
       const unsigned int  k = f.owners[o];
       FamilyWeights       family;
       auto &[nodes, g, bond_vector, beta] = family;
-      nodes.assign(1, k);
-      g.assign(1, owner_weight[o]);
-      double sum = 0.;
-      // The bonds of the last fit: the intact ones, or, in condense()
-      // before the refit, those before the break.
+      nodes.reserve(1 + n_in_fit[o]);
+      g.reserve(1 + n_in_fit[o]);
+      bond_vector.reserve(n_in_fit[o]);
+      beta.reserve(n_in_fit[o]);
+      nodes.push_back(k);
+      g.push_back(owner_weight[o]);
       for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
         if (in_fit[j])
           {
-            const unsigned int   m  = f.members[j];
-            const Tensor<1, dim> bv = x[m] - x[k];
+            const unsigned int m = f.members[j];
             nodes.push_back(m);
             g.push_back(weight[j]);
-            bond_vector.push_back(bv);
-            beta.push_back(bond_weight[j] / (bv * bv));
-            sum += bond_weight[j];
+            bond_vector.push_back(x[m] - x[k]);
+            beta.push_back(stabilisation_weight[j]);
           }
-      for (double &bt : beta)
-        bt /= sum;
       return family;
     }
 
@@ -343,38 +370,51 @@ namespace pdfem
     } // namespace
 
     template <int dim>
-    template <typename U>
     void
-    PDLSMEnergy<dim>::weights_forces(const FamilyWeights         &weights,
-                                     const double                 V,
-                                     const U                     &u_of,
-                                     std::vector<Tensor<1, dim>> &f) const
+    PDLSMEnergy<dim>::bond_forces(const std::size_t            n,
+                                  const Tensor<1, dim>        *g,
+                                  const Tensor<1, dim>        *u,
+                                  const Tensor<1, dim>        *xi,
+                                  const double                *beta,
+                                  const double                 V,
+                                  std::vector<Tensor<1, dim>> &f) const
     {
       // f_a = V_k sigma_k g_a (strain energy) + G_s V_k sum_i beta_i C_ia
       // z_i (stabilisation), z_i = u_mi - u_k - H xi_i, H = sum_a u_a (x)
-      // g_a, C_ia = [a = m_i] - [a = k] - g_a . xi_i.
-      const auto &[nodes, g, bond_vector, beta] = weights;
-      const std::size_t    n                    = nodes.size();
-      const Tensor<2, dim> H                    = family_gradient(g, u_of);
-      const Tensor<2, dim> sigma                = pdlsm->stress(H);
-      f.resize(n);
-      for (std::size_t a = 0; a < n; ++a)
-        f[a] = V * (sigma * g[a]);
-      if (stabilisation > 0.)
+      // g_a, C_ia = [a = m_i] - [a = k] - g_a . xi_i; that is
+      //   f_a = A g_a + G beta_i z_i [a = m_i] - G [a = k] sum_i beta_i z_i,
+      //   A = V sigma - G Q,  Q = sum_i beta_i z_i (x) xi_i = R - H M,
+      // with R = sum_i beta_i (u_mi - u_k) (x) xi_i and M = sum_i beta_i
+      // xi_i (x) xi_i gathered beside H: two passes over the bonds, the
+      // second one writing the forces.
+      const bool     stabilised = stabilisation > 0.;
+      Tensor<2, dim> H          = outer_product(u[0], g[0]), R, M;
+      for (std::size_t i = 0; i + 1 < n; ++i)
         {
-          const double         G   = stabilisation * this->region.mu * V;
-          const Tensor<1, dim> u_k = u_of(0);
-          Tensor<2, dim>       Q; // sum_i beta_i z_i (x) xi_i
-          for (std::size_t i = 0; i + 1 < n; ++i)
+          H += outer_product(u[i + 1], g[i + 1]);
+          if (stabilised)
             {
-              const Tensor<1, dim> z = u_of(i + 1) - u_k - H * bond_vector[i];
-              f[i + 1] += G * beta[i] * z;
-              f[0] -= G * beta[i] * z;
-              Q += beta[i] * outer_product(z, bond_vector[i]);
+              R += outer_product(beta[i] * (u[i + 1] - u[0]), xi[i]);
+              M += outer_product(beta[i] * xi[i], xi[i]);
             }
-          for (std::size_t a = 0; a < n; ++a)
-            f[a] -= G * (Q * g[a]);
         }
+      const double   G = stabilisation * this->region.mu * V;
+      Tensor<2, dim> A = V * Tensor<2, dim>(pdlsm->stress(H));
+      if (stabilised)
+        A -= G * (R - H * M);
+      f.resize(n);
+      Tensor<1, dim> z_sum; // sum_i beta_i z_i
+      for (std::size_t i = 0; i + 1 < n; ++i)
+        {
+          f[i + 1] = A * g[i + 1];
+          if (stabilised)
+            {
+              const Tensor<1, dim> z = beta[i] * (u[i + 1] - u[0] - H * xi[i]);
+              f[i + 1] += G * z;
+              z_sum += z;
+            }
+        }
+      f[0] = A * g[0] - G * z_sum;
     }
 
     template <int dim>
@@ -386,33 +426,89 @@ namespace pdfem
       const CondensedFamily *c = condensed[o].get();
       if (c == nullptr)
         {
-          const FamilyWeights weights = family_weights(o);
-          weights_forces(
-            weights,
-            (*this->region.pd_volume)[weights.nodes[0]],
-            [&](const std::size_t a) { return u[weights.nodes[a]]; },
-            f);
+          // The family's weights and displacements gathered into
+          // contiguous arrays (reused by the thread): bond_forces() then
+          // runs on them from the cache. family_weights() allocated and
+          // filled four vectors per family and product; on the 2D mostly-
+          // PD growth run of doc/benchmarks/fracture.md §5 (energy form)
+          // that and the per-bond calls of a visitor took pdfem's 8.8-9.2 s
+          // (solve 7.2-7.4 s), gathered 6.2-6.9 s (solve 4.8-5.4 s).
+          thread_local std::vector<Tensor<1, dim>> g, u_local, xi;
+          thread_local std::vector<double>         beta;
+          const PD::Families &families = *this->region.families;
+          const auto         &x        = *this->region.position;
+          const unsigned int  k        = families.owners[o];
+          const std::size_t   n        = 1 + n_in_fit[o];
+          g.resize(n);
+          u_local.resize(n);
+          xi.resize(n);
+          beta.resize(n);
+          // Raw pointers: the stores into the thread's vectors otherwise
+          // reload every array's address at every bond.
+          Tensor<1, dim> *g_out = g.data(), *u_out = u_local.data(),
+                         *xi_out         = xi.data();
+          double               *beta_out = beta.data();
+          const unsigned int   *members  = families.members.data();
+          const std::uint8_t   *fit      = in_fit.data();
+          const Tensor<1, dim> *w        = weight.data();
+          const double         *sw       = stabilisation_weight.data();
+          const Point<dim>      x_k      = x[k];
+          *g_out++                       = owner_weight[o];
+          *u_out++                       = u[k];
+          for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
+               ++j)
+            if (fit[j])
+              {
+                const unsigned int m = members[j];
+                *g_out++             = w[j];
+                *u_out++             = u[m];
+                *xi_out++            = x[m] - x_k;
+                *beta_out++          = sw[j];
+              }
+          bond_forces(n,
+                      g.data(),
+                      u_local.data(),
+                      xi.data(),
+                      beta.data(),
+                      (*this->region.pd_volume)[k],
+                      f);
           return;
         }
       // Condensed: y = K [u_r; 0], u_L = -K_LL^+ y_L, f = (K [u_r; u_L])_r.
-      const std::vector<unsigned int> &nodes = c->original.nodes;
-      std::vector<Tensor<1, dim>>      u0(nodes.size()), y;
+      const FamilyWeights        &w = c->original;
+      std::vector<Tensor<1, dim>> u0(w.nodes.size()), y;
       for (const std::size_t a : c->kept)
-        u0[a] = u[nodes[a]];
-      const auto        local = [&](const std::size_t a) { return u0[a]; };
-      const std::size_t m     = dim * c->lost.size();
+        u0[a] = u[w.nodes[a]];
+      const auto forces = [&]() {
+        bond_forces(w.nodes.size(),
+                    w.g.data(),
+                    u0.data(),
+                    w.bond_vector.data(),
+                    w.beta.data(),
+                    c->volume,
+                    y);
+      };
+      const std::size_t m = dim * c->lost.size();
       if (m > 0)
         {
-          weights_forces(c->original, c->volume, local, y);
+          // u_L = -K_LL^+ y_L on contiguous y_L: the product's inner loop
+          // then streams one row of K_LL^+ (indexing y through the lost
+          // list in it took half of the condensed families' time).
+          forces();
+          thread_local std::vector<double> y_lost;
+          y_lost.resize(m);
+          for (std::size_t q = 0; q < m; ++q)
+            y_lost[q] = y[c->lost[q / dim]][q % dim];
+          const double *P = c->lost_inverse.data();
           for (std::size_t r = 0; r < m; ++r)
             {
               double s = 0.;
               for (std::size_t q = 0; q < m; ++q)
-                s += c->lost_inverse[r * m + q] * y[c->lost[q / dim]][q % dim];
+                s += P[r * m + q] * y_lost[q];
               u0[c->lost[r / dim]][r % dim] = -s;
             }
         }
-      weights_forces(c->original, c->volume, local, y);
+      forces();
       f.resize(c->kept.size());
       for (std::size_t a = 0; a < c->kept.size(); ++a)
         f[a] = y[c->kept[a]];
@@ -509,8 +605,8 @@ namespace pdfem
     template <int dim>
     void
     PDLSMEnergy<dim>::family_diagonal_blocks(
-      const std::size_t            o,
-      const NodalField<dim>       &u,
+      const std::size_t o,
+      const NodalField<dim> & /*u*/,
       std::vector<Tensor<2, dim>> &D) const
     {
       if (const CondensedFamily *c = condensed[o].get())

@@ -125,6 +125,10 @@ namespace pdfem
       /// family o's bonds and owner entries only.
       bool
       fit(std::size_t o, FitWorkspace<dim> &ws);
+      /// stabilisation_weight and n_in_fit of family @p o from its bonds
+      /// in the fit and their bond_weight.
+      void
+      set_stabilisation_weights(std::size_t o);
       /// Solve for the integration-constraint correction of every family,
       /// once at set-up (collective; pdlsm_energy_correction.cc).
       void
@@ -188,14 +192,21 @@ namespace pdfem
                         std::vector<dealii::Tensor<2, dim>> &K,
                         bool diagonal = false) const;
 
-      /// f = K u over @p weights' nodes, u_of(a) the displacement of node
-      /// a of weights.nodes, family volume @p V.
-      template <typename U>
+      /**
+       * f = K u for a family of @p n nodes, volume @p V: gradient weights
+       * g[a] and displacements u[a] of its nodes a (the owner a = 0),
+       * bond vectors xi[i] and stabilisation weights beta[i] of its members
+       * a = i + 1. Contiguous arrays: a FamilyWeights' own, or an unbroken
+       * family's gathered by family_forces().
+       */
       void
-      weights_forces(const FamilyWeights                 &weights,
-                     double                               V,
-                     const U                             &u_of,
-                     std::vector<dealii::Tensor<1, dim>> &f) const;
+      bond_forces(std::size_t                          n,
+                  const dealii::Tensor<1, dim>        *g,
+                  const dealii::Tensor<1, dim>        *u,
+                  const dealii::Tensor<1, dim>        *xi,
+                  const double                        *beta,
+                  double                               V,
+                  std::vector<dealii::Tensor<1, dim>> &f) const;
 
       double                      weight_factor   = 0.33;
       bool                        quadratic_fit   = false;
@@ -214,6 +225,11 @@ namespace pdfem
       /// Per bond: intact when its family was last fitted (the bonds of
       /// the family's weights; condense() reads them before the refit).
       std::vector<std::uint8_t> in_fit;
+      /// Per bond of the last fit its normalised stabilisation weight
+      /// beta_i = omega_i V_i / (|xi_i|^2 sum omega V); per owner the
+      /// number of those bonds.
+      std::vector<double>       stabilisation_weight;
+      std::vector<unsigned int> n_in_fit;
       /// Per owner: its condensed energy (null while it has none).
       std::vector<std::unique_ptr<CondensedFamily>> condensed;
       /// |sum_k V_k g_kj - s_j| / |s| after the solve, and its CG
