@@ -5,7 +5,8 @@
 # Arguments: [BUILD_DIR] [OUT_DIR] of the calling script (default: build/ and doc/benchmarks/ of
 # the checkout). Sets: here (the calling script's folder), root, build, out (created), pdfem, pdfem-plot as plot, pdfem_check as get,
 # work (a temporary folder removed on exit), peer (the PDLSM-FEM inputs beside the checkout), and
-# v DIR KEY (a value of DIR/summary.json). Lets Open MPI run as root.
+# v DIR KEY (a value of DIR/summary.json), have_plot (true when the charts can be drawn: pdfem-plot
+# built and xvfb-run installed). Lets Open MPI run as root.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[1]}")" && pwd)
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -21,3 +22,4 @@ trap 'rm -rf "$work"' EXIT
 mkdir -p "$out"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 v() { "$get" get "$1/summary.json" "$2"; }
+have_plot() { [ -x "$plot" ] && command -v xvfb-run > /dev/null; }

@@ -44,7 +44,7 @@ for n in 5 10 20 50 100; do
   row newton "$n load steps" "$work/n$n"
 done
 
-if [ -x "$plot" ] && command -v xvfb-run > /dev/null; then
+if have_plot; then
   # one error column per driver (empty cells are left out), so that each is a series
   awk -F, 'NR == 1 { print "pdfem_s,relaxation,adaptive,newton" }
     NR > 1 && $5 != "" { printf "%s,%s,%s,%s\n", $4, $1 == "relaxation" ? $5 : "",

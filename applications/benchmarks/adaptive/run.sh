@@ -69,7 +69,7 @@ for case in ${CASES:-square_hole}; do
   done
 done
 
-if [ -x "$plot" ] && command -v xvfb-run > /dev/null; then
+if have_plot; then
   awk -F, 'NR > 1 && $12 != "" && $12 > 0 { print $2 "," $7 "," $12 }' "$csv" |
     sed '1i method,pdfem_s,l2_u_vs_adr' > "$work/accuracy.csv"
   xvfb-run -a "$plot" chart "$work/accuracy.csv" --x pdfem_s --y l2_u_vs_adr --points --logy \

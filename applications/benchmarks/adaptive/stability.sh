@@ -62,7 +62,7 @@ for ne in 10 20 40 80 160; do
 done
 fi
 
-if [ -x "$plot" ] && command -v xvfb-run > /dev/null; then
+if have_plot; then
   chart() { # method parameter y out [options]
     local y=$3 o=$4
     awk -F, -v m="$1" -v p="$2" -v col="$y" 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; print $3 "," col }

@@ -49,7 +49,7 @@ done
 cat "$csv"
 
 # |energy_drift| against the step, h = 0.1 quads: both operators in one chart.
-if [ -x "$plot" ] && command -v xvfb-run > /dev/null; then
+if have_plot; then
   for model in pdlsm_energy pdlsm; do
     awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) { if ($i == "step") t = i; if ($i == "energy_drift") e = i }
                        print "step,abs_energy_drift"; next }

@@ -142,7 +142,7 @@ if [ -f "$work/platCrack_NewMarkON_FC2.in" ]; then
 fi
 
 # ---- charts
-if [ -x "$plot" ] && command -v xvfb-run > /dev/null; then
+if have_plot; then
   grep -E "^case|^bar," "$stab" > "$work/stab-bar.csv"
   if grep -q "^plateCrack," "$stab"; then
     grep -E "^case|^plateCrack," "$stab" > "$work/stab-pc.csv"

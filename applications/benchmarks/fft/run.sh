@@ -64,7 +64,7 @@ ms=3,4,5,6,8,10
   fi
 } | tee "$extra"
 
-if [ -x "$plot" ] && command -v xvfb-run > /dev/null; then
+if have_plot; then
   # one column per m (the FFT's time does not depend on m: its m = 5 row is drawn)
   python3 - "$csv" "$extra" "$work" << 'PY'
 import csv, sys

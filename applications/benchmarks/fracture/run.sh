@@ -122,7 +122,7 @@ if [ -d "$peer" ]; then
                        print "U,reaction_RF_x"; next }
              { printf "%.6e,%.6e\n", $t * 4.79e-5, $r }' "$dir/history.csv" > "$out/fracture_peer_fc${fc}_curve.csv"
     printf 'U,peer_peak\n%s,%s\n' "$pu" "$ppeak" > "$work/peer_fc$fc.csv"
-    if [ -x "$plot" ]; then
+    if have_plot; then
       xvfb-run -a "$plot" chart "$out/fracture_peer_fc${fc}_curve.csv" --x U --y reaction_RF_x \
         --csv2 "$work/peer_fc$fc.csv" --y2 peer_peak --points --label "pdfem,PDLSM-FEM peak (baseline)" \
         --xlabel "prescribed displacement U [m]" --ylabel "reaction RF [N/m]" \
@@ -150,7 +150,7 @@ for scene in growth_mcts_all_pd growth_mcts_center_crack growth_mcts_adaptive; d
     "$("$get" get "$s" final.pd_cells)" "$("$get" get "$s" problem.cells)" "$("$get" get "$s" peak_reaction.top.y)" \
     "$("$get" get "$s" peak_reaction.top.y_step)" "$("$get" get "$s" steps)" "$("$get" get "$s" exit_state)" \
     "$("$get" get "$s" timings.solve)" "$("$get" get "$s" timings.total)" >> "$csv"
-  if [ "$scene" = growth_mcts_adaptive ] && [ -x "$plot" ]; then
+  if [ "$scene" = growth_mcts_adaptive ] && have_plot; then
     "$pdfem" "$scenes/$scene.prm" --quiet --output "$dir-vtu" --set "Linear solver/Type=gmres" \
       --set "Output/Write vtu=true" 2> /dev/null || true
     xvfb-run -a "$plot" field "$dir-vtu/solution_00000.pvtu" --field pd_region --lines "$dir-vtu/crack_paths.vtk" \
@@ -188,7 +188,7 @@ for n_pd in 47 61; do
 done
 # The operator pdfem chooses for cracked scenes (Model = auto): the energy form.
 mixed auto 47 45
-if [ -x "$plot" ] && command -v xvfb-run > /dev/null; then
+if have_plot; then
   last=$(ls "$work"/mixed_pdlsm_47_45/solution_*.pvtu | sort | tail -n 1)
   xvfb-run -a "$plot" field "$last" --field damage --lines "$work/mixed_pdlsm_47_45/crack_paths.vtk" --edges \
     --zoom -0.55 0.55 -0.55 0.55 --title "Mixed-mode growth: 62.7 % PD, crack at 45 degrees" \

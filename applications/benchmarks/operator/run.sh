@@ -112,7 +112,6 @@ wide() {
     END { printf "x"; for (j = 1; j <= ns; ++j) printf ",%s", name[j]; print ""
           for (r = 1; r <= nr; ++r) { printf "%s", xs[r]; for (j = 1; j <= ns; ++j) printf ",%s", (j == row[r] ? ys[r] : ""); print "" } }' "$1"
 }
-have_plot() { [ -x "$plot" ] && command -v xvfb-run > /dev/null; }
 columns() { head -n 1 "$1" | cut -d, -f2-; } # the series of a wide CSV
 by_x() { awk 'NR == 1 { print; fflush(); next } { print | "sort -t, -k1,1g" }'; } # rows of a wide CSV in the order of x
 time_label="pdfem wall time (summary.json timings.total) [s]"

@@ -67,7 +67,7 @@ with open(sys.argv[2], "w") as out:
             print(line)
 PY
 
-if [ -x "$plot" ] && command -v xvfb-run > /dev/null; then
+if have_plot; then
   split_by_dim "$csv" growth
   xvfb-run -a "$plot" chart "$work/growth_3.csv" --x dofs --y step_s --logx --logy --points \
     --csv2 "$work/growth_2.csv" --label "3D (FC 2),2D (FC 1)" --xlabel "DoFs" \

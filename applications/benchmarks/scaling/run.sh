@@ -90,7 +90,7 @@ with open(sys.argv[2], "w") as out:
             print(line)
 PY
 
-if [ -x "$plot" ] && command -v xvfb-run > /dev/null; then
+if have_plot; then
   split_by_dim "$csv" scaling
   xvfb-run -a "$plot" chart "$work/scaling_3.csv" --x dofs --y compute_s,solve_s,setup_s --logx --logy --points \
     --csv2 "$work/scaling_2.csv" --label "3D total,3D solve,3D setup,2D total,2D solve,2D setup" \

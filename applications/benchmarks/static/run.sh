@@ -55,7 +55,7 @@ for factor in 1 0.5 0.25; do
     --set "Mesh/Mesh size factor=$factor" --set "Linear solver/Type=gmres"
 done
 
-if [ -x "$plot" ] && command -v xvfb-run > /dev/null; then
+if have_plot; then
   grep -E "^case|^plate_with_hole,direct" "$csv" > "$work/direct.csv"
   grep -E "^case|^plate_with_hole,gmres" "$csv" > "$work/gmres.csv"
   xvfb-run -a "$plot" chart "$work/direct.csv" --x dofs --y compute_s --csv2 "$work/gmres.csv" --y2 compute_s \

@@ -40,7 +40,7 @@ for name in cc_fe cc_band cc_all_pd; do
     }' "$f" >> "$merged"
 done
 cat "$merged"
-if [ -x "$plot" ]; then
+if have_plot; then
   xvfb-run -a "$plot" chart "$merged" --x wall_seconds \
     --y fe_slit,band_margin_2,band_margin_4,band_margin_8,all_pd --logx --logy --markers \
     --label "FE only (slit),PD band of 2 cells,PD band of 4 cells,PD band of 8 cells,all PD" \

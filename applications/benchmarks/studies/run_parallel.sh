@@ -54,7 +54,7 @@ awk -F, -v r="$(column "$t1" "Mesh/Global refinements")" -v n="$(column "$t1" ra
     }
   }' "$t1" "$t2" > "$out/studies_parallel.csv"
 cat "$out/studies_parallel.csv"
-if [ -x "$plot" ]; then
+if have_plot; then
   xvfb-run -a "$plot" chart "$out/studies_parallel.csv" --x dofs \
     --y wall_1rank_1thread,wall_2ranks,wall_1rank_2threads --logx --logy --markers \
     --label "1 rank x 1 thread,2 ranks x 1 thread,1 rank x 2 threads" --xlabel "DoFs" \
