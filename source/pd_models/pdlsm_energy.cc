@@ -429,10 +429,9 @@ namespace pdfem
           // The family's weights and displacements gathered into
           // contiguous arrays (reused by the thread): bond_forces() then
           // runs on them from the cache. family_weights() allocated and
-          // filled four vectors per family and product; on the 2D mostly-
-          // PD growth run of doc/benchmarks/fracture.md §5 (energy form)
-          // that and the per-bond calls of a visitor took pdfem's 8.8-9.2 s
-          // (solve 7.2-7.4 s), gathered 6.2-6.9 s (solve 4.8-5.4 s).
+          // filled four vectors per family and product: a third of the
+          // samples of the energy-form run of doc/benchmarks/fracture.md
+          // §6 (doc/changes/20261126_energy_form_products.md).
           thread_local std::vector<Tensor<1, dim>> g, u_local, xi;
           thread_local std::vector<double>         beta;
           const PD::Families &families = *this->region.families;

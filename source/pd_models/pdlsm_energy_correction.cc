@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace pdfem
 {
@@ -96,6 +97,10 @@ namespace pdfem
         const unsigned int ranks = Utilities::MPI::n_mpi_processes(comm);
         if (ranks == 1)
           return std::move(local);
+        // MPI counts and offsets are int.
+        AssertThrow(local.size() < std::numeric_limits<int>::max() / ranks,
+                    ExcMessage("the integration correction's operator has "
+                               "too many entries to gather on one rank"));
         const int        size = local.size();
         std::vector<int> sizes(ranks), offsets(ranks, 0);
         MPI_Gather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, comm);
