@@ -50,10 +50,10 @@ namespace pdfem
       unsigned long n = 0;
       if (!cracks.empty())
         {
-          // A bond can only meet a crack if its owner is within two horizons
-          // of the crack's bounding box; each owner tests only those cracks
-          // (one box around all new segments spanned the whole plate once
-          // two tips grew apart, and every bond was tested), and each bond
+          // A bond can only meet a crack if its owner is within its longest
+          // bond of the crack's bounding box; each owner tests only those
+          // cracks (one box around all new segments spanned the whole plate
+          // once two tips grew apart, and every bond was tested), and each bond
           // only those whose box meets its own (a 3D growth step of the
           // maximum principal stress criterion cuts with 100 discs of 12
           // triangles each: on the 14.6 k-DoF box the tests took 6 s of a
@@ -70,11 +70,20 @@ namespace pdfem
             const unsigned int k = f.owners[o];
             if (s.no_fail[k])
               return 0ul;
+            // The owner's reach, its longest bond (a member lies within
+            // the larger of the two horizons): on the 3D growth run of
+            // doc/benchmarks/scaling.md two horizons let about 8 times as
+            // many of the 1 200 crack triangles near each owner.
+            double reach = 0.;
+            for (std::size_t b = f.offsets[o]; b < f.offsets[o + 1]; ++b)
+              reach =
+                std::max(reach, s.x[k].distance_square(s.x[f.members[b]]));
+            reach = std::sqrt(reach);
             near.clear();
             for (unsigned int c = 0; c < cracks.size(); ++c)
               if (Mesh::boxes_meet(Mesh::segment_box(s.x[k], s.x[k]),
                                    boxes[c],
-                                   2. * s.horizon[k]))
+                                   reach))
                 near.push_back(c);
             unsigned long cut = 0;
             for (std::size_t b = f.offsets[o];
