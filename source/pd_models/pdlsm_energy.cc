@@ -252,33 +252,50 @@ namespace pdfem
     }
 
     template <int dim>
-    typename PDLSMEnergy<dim>::FamilyWeights
-    PDLSMEnergy<dim>::family_weights(const std::size_t o) const
+    void
+    PDLSMEnergy<dim>::family_weights(const std::size_t o,
+                                     FamilyWeights    &family) const
     {
       // The family's nodes (owner, intact members), their gradient
       // weights, the bonds and the stabilisation weights, those of the
       // last fit: the intact ones, or, in condense() before the refit,
-      // those before the break.
-      const PD::Families &f = *this->region.families;
-      const auto         &x = *this->region.position;
-      const unsigned int  k = f.owners[o];
-      FamilyWeights       family;
+      // those before the break. Written through raw pointers: stores
+      // through the vectors reload every array's address at every bond.
+      const PD::Families &f               = *this->region.families;
+      const auto         &x               = *this->region.position;
+      const unsigned int  k               = f.owners[o];
       auto &[nodes, g, bond_vector, beta] = family;
-      nodes.reserve(1 + n_in_fit[o]);
-      g.reserve(1 + n_in_fit[o]);
-      bond_vector.reserve(n_in_fit[o]);
-      beta.reserve(n_in_fit[o]);
-      nodes.push_back(k);
-      g.push_back(owner_weight[o]);
+      nodes.resize(1 + n_in_fit[o]);
+      g.resize(1 + n_in_fit[o]);
+      bond_vector.resize(n_in_fit[o]);
+      beta.resize(n_in_fit[o]);
+      unsigned int         *node_out = nodes.data();
+      Tensor<1, dim>       *g_out = g.data(), *xi_out = bond_vector.data();
+      double               *beta_out = beta.data();
+      const unsigned int   *members  = f.members.data();
+      const std::uint8_t   *fit      = in_fit.data();
+      const Tensor<1, dim> *w        = weight.data();
+      const double         *sw       = stabilisation_weight.data();
+      const Point<dim>      x_k      = x[k];
+      *node_out++                    = k;
+      *g_out++                       = owner_weight[o];
       for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
-        if (in_fit[j])
+        if (fit[j])
           {
-            const unsigned int m = f.members[j];
-            nodes.push_back(m);
-            g.push_back(weight[j]);
-            bond_vector.push_back(x[m] - x[k]);
-            beta.push_back(stabilisation_weight[j]);
+            const unsigned int m = members[j];
+            *node_out++          = m;
+            *g_out++             = w[j];
+            *xi_out++            = x[m] - x_k;
+            *beta_out++          = sw[j];
           }
+    }
+
+    template <int dim>
+    typename PDLSMEnergy<dim>::FamilyWeights
+    PDLSMEnergy<dim>::family_weights(const std::size_t o) const
+    {
+      FamilyWeights family;
+      family_weights(o, family);
       return family;
     }
 
@@ -371,13 +388,10 @@ namespace pdfem
 
     template <int dim>
     void
-    PDLSMEnergy<dim>::bond_forces(const std::size_t            n,
-                                  const Tensor<1, dim>        *g,
-                                  const Tensor<1, dim>        *u,
-                                  const Tensor<1, dim>        *xi,
-                                  const double                *beta,
-                                  const double                 V,
-                                  std::vector<Tensor<1, dim>> &f) const
+    PDLSMEnergy<dim>::weights_forces(const FamilyWeights               &w,
+                                     const std::vector<Tensor<1, dim>> &u,
+                                     const double                       V,
+                                     std::vector<Tensor<1, dim>>       &f) const
     {
       // f_a = V_k sigma_k g_a (strain energy) + G_s V_k sum_i beta_i C_ia
       // z_i (stabilisation), z_i = u_mi - u_k - H xi_i, H = sum_a u_a (x)
@@ -387,8 +401,10 @@ namespace pdfem
       // with R = sum_i beta_i (u_mi - u_k) (x) xi_i and M = sum_i beta_i
       // xi_i (x) xi_i gathered beside H: two passes over the bonds, the
       // second one writing the forces.
-      const bool     stabilised = stabilisation > 0.;
-      Tensor<2, dim> H          = outer_product(u[0], g[0]), R, M;
+      const auto &[nodes, g, xi, beta] = w;
+      const std::size_t n              = nodes.size();
+      const bool        stabilised     = stabilisation > 0.;
+      Tensor<2, dim>    H              = outer_product(u[0], g[0]), R, M;
       for (std::size_t i = 0; i + 1 < n; ++i)
         {
           H += outer_product(u[i + 1], g[i + 1]);
@@ -426,51 +442,19 @@ namespace pdfem
       const CondensedFamily *c = condensed[o].get();
       if (c == nullptr)
         {
-          // The family's weights and displacements gathered into
-          // contiguous arrays (reused by the thread): bond_forces() then
-          // runs on them from the cache. family_weights() allocated and
-          // filled four vectors per family and product: a third of the
-          // samples of the energy-form run of doc/benchmarks/fracture.md
-          // §6 (doc/changes/20261126_energy_form_products.md).
-          thread_local std::vector<Tensor<1, dim>> g, u_local, xi;
-          thread_local std::vector<double>         beta;
-          const PD::Families &families = *this->region.families;
-          const auto         &x        = *this->region.position;
-          const unsigned int  k        = families.owners[o];
-          const std::size_t   n        = 1 + n_in_fit[o];
-          g.resize(n);
-          u_local.resize(n);
-          xi.resize(n);
-          beta.resize(n);
-          // Raw pointers: the stores into the thread's vectors otherwise
-          // reload every array's address at every bond.
-          Tensor<1, dim> *g_out = g.data(), *u_out = u_local.data(),
-                         *xi_out         = xi.data();
-          double               *beta_out = beta.data();
-          const unsigned int   *members  = families.members.data();
-          const std::uint8_t   *fit      = in_fit.data();
-          const Tensor<1, dim> *w        = weight.data();
-          const double         *sw       = stabilisation_weight.data();
-          const Point<dim>      x_k      = x[k];
-          *g_out++                       = owner_weight[o];
-          *u_out++                       = u[k];
-          for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
-               ++j)
-            if (fit[j])
-              {
-                const unsigned int m = members[j];
-                *g_out++             = w[j];
-                *u_out++             = u[m];
-                *xi_out++            = x[m] - x_k;
-                *beta_out++          = sw[j];
-              }
-          bond_forces(n,
-                      g.data(),
-                      u_local.data(),
-                      xi.data(),
-                      beta.data(),
-                      (*this->region.pd_volume)[k],
-                      f);
+          // The family's weights and displacements gathered into vectors
+          // the thread reuses: weights_forces() then runs on them from the
+          // cache. A new FamilyWeights per family and product (four
+          // allocations) took a third of the samples of the energy-form
+          // run of doc/benchmarks/fracture.md §6
+          // (doc/changes/20261126_energy_form_products.md).
+          thread_local FamilyWeights               w;
+          thread_local std::vector<Tensor<1, dim>> u_local;
+          family_weights(o, w);
+          u_local.resize(w.nodes.size());
+          for (std::size_t a = 0; a < w.nodes.size(); ++a)
+            u_local[a] = u[w.nodes[a]];
+          weights_forces(w, u_local, (*this->region.pd_volume)[w.nodes[0]], f);
           return;
         }
       // Condensed: y = K [u_r; 0], u_L = -K_LL^+ y_L, f = (K [u_r; u_L])_r.
@@ -478,16 +462,8 @@ namespace pdfem
       std::vector<Tensor<1, dim>> u0(w.nodes.size()), y;
       for (const std::size_t a : c->kept)
         u0[a] = u[w.nodes[a]];
-      const auto forces = [&]() {
-        bond_forces(w.nodes.size(),
-                    w.g.data(),
-                    u0.data(),
-                    w.bond_vector.data(),
-                    w.beta.data(),
-                    c->volume,
-                    y);
-      };
-      const std::size_t m = dim * c->lost.size();
+      const auto        forces = [&]() { weights_forces(w, u0, c->volume, y); };
+      const std::size_t m      = dim * c->lost.size();
       if (m > 0)
         {
           // u_L = -K_LL^+ y_L on contiguous y_L: the product's inner loop

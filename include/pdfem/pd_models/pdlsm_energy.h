@@ -142,6 +142,10 @@ namespace pdfem
         std::vector<dealii::Tensor<1, dim>> g, bond_vector;
         std::vector<double>                 beta;
       };
+      /// Family @p o's FamilyWeights (written into @p family, whose
+      /// vectors keep their capacity).
+      void
+      family_weights(std::size_t o, FamilyWeights &family) const;
       /// Family @p o's FamilyWeights.
       FamilyWeights
       family_weights(std::size_t o) const;
@@ -192,21 +196,13 @@ namespace pdfem
                         std::vector<dealii::Tensor<2, dim>> &K,
                         bool diagonal = false) const;
 
-      /**
-       * f = K u for a family of @p n nodes, volume @p V: gradient weights
-       * g[a] and displacements u[a] of its nodes a (the owner a = 0),
-       * bond vectors xi[i] and stabilisation weights beta[i] of its members
-       * a = i + 1. Contiguous arrays: a FamilyWeights' own, or an unbroken
-       * family's gathered by family_forces().
-       */
+      /// f = K u over the family @p w, volume @p V, u[a] the displacement
+      /// of its node a (the owner a = 0).
       void
-      bond_forces(std::size_t                          n,
-                  const dealii::Tensor<1, dim>        *g,
-                  const dealii::Tensor<1, dim>        *u,
-                  const dealii::Tensor<1, dim>        *xi,
-                  const double                        *beta,
-                  double                               V,
-                  std::vector<dealii::Tensor<1, dim>> &f) const;
+      weights_forces(const FamilyWeights                       &w,
+                     const std::vector<dealii::Tensor<1, dim>> &u,
+                     double                                     V,
+                     std::vector<dealii::Tensor<1, dim>>       &f) const;
 
       double                      weight_factor   = 0.33;
       bool                        quadratic_fit   = false;
