@@ -120,6 +120,29 @@ namespace pdfem
         return all;
       }
 
+      /**
+       * Items grouped by their key (< @p n), by counting sort: for_each(emit)
+       * calls emit(key, item) for every item (it is called twice, to count
+       * and to place); the items of key k are grouped[start[k] ..
+       * start[k + 1]], in the order emitted.
+       */
+      template <typename Item, typename ForEach>
+      std::pair<std::vector<std::size_t>, std::vector<Item>>
+      group_by_key(const std::size_t n, const ForEach &for_each)
+      {
+        std::vector<std::size_t> start(n + 1, 0);
+        for_each(
+          [&](const std::size_t key, const Item &) { ++start[key + 1]; });
+        for (std::size_t k = 0; k < n; ++k)
+          start[k + 1] += start[k];
+        std::vector<Item>        grouped(start[n]);
+        std::vector<std::size_t> next(start.begin(), start.end() - 1);
+        for_each([&](const std::size_t key, const Item &item) {
+          grouped[next[key]++] = item;
+        });
+        return {std::move(start), std::move(grouped)};
+      }
+
       /// Rows of a sparse matrix: rows[i] has row_length[i] entries, the
       /// next ones of column and value (columns increasing).
       struct SparseRows
@@ -189,20 +212,14 @@ namespace pdfem
                         const std::vector<double>               &volume,
                         const unsigned int                       n)
       {
-        // The (family, node in it) pairs of each node, by counting sort.
-        std::vector<std::size_t> start(n + 1, 0);
-        for (const auto &p : P)
-          for (const unsigned int node : p.nodes)
-            ++start[node + 1];
-        for (unsigned int j = 0; j < n; ++j)
-          start[j + 1] += start[j];
-        std::vector<std::pair<unsigned int, unsigned int>> in_family(start[n]);
-        {
-          std::vector<std::size_t> next(start.begin(), start.end() - 1);
-          for (std::size_t i = 0; i < P.size(); ++i)
-            for (std::size_t a = 0; a < P[i].nodes.size(); ++a)
-              in_family[next[P[i].nodes[a]]++] = {i, a};
-        }
+        // The (family, node in it) pairs of each node.
+        using Pair = std::pair<unsigned int, unsigned int>;
+        const auto [start, in_family] =
+          group_by_key<Pair>(n, [&](const auto &emit) {
+            for (std::size_t i = 0; i < P.size(); ++i)
+              for (std::size_t a = 0; a < P[i].nodes.size(); ++a)
+                emit(P[i].nodes[a], Pair(i, a));
+          });
         SparseRows out;
         DenseRow   row(n);
         for (unsigned int j = 0; j < n; ++j)
@@ -251,22 +268,18 @@ namespace pdfem
         SparseRows                sum;
         if (!root)
           return sum;
-        // The pieces of each row: (first entry, length), rank order.
-        std::vector<std::size_t> first(rows.size()), start(n + 1, 0);
+        // The pieces of each row (their first entries), in rank order.
+        std::vector<std::size_t> first(rows.size());
         for (std::size_t r = 0, e = 0; r < rows.size(); ++r)
           {
             first[r] = e;
             e += lengths[r];
-            ++start[rows[r] + 1];
           }
-        for (std::size_t j = 0; j < n; ++j)
-          start[j + 1] += start[j];
-        std::vector<std::size_t> piece(rows.size());
-        {
-          std::vector<std::size_t> next(start.begin(), start.end() - 1);
-          for (std::size_t r = 0; r < rows.size(); ++r)
-            piece[next[rows[r]]++] = r;
-        }
+        const auto [start, piece] =
+          group_by_key<std::size_t>(n, [&](const auto &emit) {
+            for (std::size_t r = 0; r < rows.size(); ++r)
+              emit(rows[r], r);
+          });
         sum.column.reserve(columns.size() + n);
         sum.value.reserve(columns.size() + n);
         DenseRow row(n);
