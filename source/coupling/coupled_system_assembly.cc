@@ -2,6 +2,7 @@
 // CoupledSystem: internal force, tangent (assembled or matrix-free), external
 // force, residual, solve.
 #include <pdfem/base/config.h>
+#include <pdfem/base/exceptions.h>
 #include <pdfem/solvers/inertia.h>
 
 #include <deal.II/base/mpi.h>
@@ -232,35 +233,12 @@ namespace pdfem
       tangent_outdated = false;
       matrix           = 0.;
       // FE cells: the owned rows of the unconstrained FE matrix (assembled
-      // once), with prescribed rows and columns dropped. Rows are read as
-      // Epetra views: deal.II's Trilinos row iterator extracts the row again
-      // at every step (the tangent took 231 s instead of 2 s on the box).
-      const Epetra_CrsMatrix       &A = fe_matrix.trilinos_matrix();
+      // once), with prescribed rows and columns dropped.
       std::vector<global_dof_index> cols;
       std::vector<double>           values;
-      for (int local_row = 0; local_row < A.NumMyRows(); ++local_row)
-        {
-          const global_dof_index row = A.GRID(local_row);
-          if (dof_fixed[row])
-            continue;
-          int     n = 0;
-          double *v = nullptr;
-          int    *c = nullptr;
-          A.ExtractMyRowView(local_row, n, v, c);
-          cols.clear();
-          values.clear();
-          for (int e = 0; e < n; ++e)
-            {
-              const global_dof_index col = A.GCID(c[e]);
-              if (!dof_fixed[col] && v[e] != 0.)
-                {
-                  cols.push_back(col);
-                  values.push_back(v[e]);
-                }
-            }
-          matrix.add(
-            row, cols.size(), cols.data(), values.data(), false, false);
-        }
+      for_each_free_fe_row(cols, values, [&](const global_dof_index row) {
+        matrix.add(row, cols.size(), cols.data(), values.data(), false, false);
+      });
 
       // PD rows: the model's tangent row of each owner, at the state of the
       // last residual (nonlinear models) — its own block first.
@@ -472,7 +450,11 @@ namespace pdfem
       s.tangent_stale = assemble_tangent && !s.matrix_free &&
                         (!s.model->linear() || s.tangent_outdated);
       if (!s.model->linear())
-        s.u_tangent = s.u_ghosted; // the state check_stability() tests
+        {
+          s.u_tangent = s.u_ghosted; // the state check_stability() tests
+          if (assemble_tangent && s.matrix_free)
+            s.block_inverse.clear(); // matrix-free: rebuilt at u_tangent
+        }
 
       // Reactions: the force the supports exert, f_int - f_ext, summed over
       // each set's nodes (every component), for the 2D thickness.
@@ -519,8 +501,11 @@ namespace pdfem
     CoupledSystem<dim>::stiffness_row_bounds(Vector &bounds)
     {
       Impl &s = *impl;
-      AssertThrow(!s.matrix_free,
-                  ExcMessage("row bounds need the assembled tangent"));
+      if (s.matrix_free)
+        {
+          s.matrix_free_row_bounds(bounds);
+          return;
+        }
       if (s.tangent_stale)
         {
           s.assemble_tangent();
@@ -550,13 +535,94 @@ namespace pdfem
     }
 
     template <int dim>
+    void
+    CoupledSystem<dim>::Impl::matrix_free_row_bounds(Vector &bounds) const
+    {
+      // sum_j |K_ij| as the assembled tangent's rows would give it (FE rows
+      // and PD tangent rows with prescribed rows and columns dropped, the
+      // held diagonal), the FE and PD parts of a row summed apart: on
+      // interface nodes an upper bound of the assembled row's sum.
+      AssertThrow(!layout.family_elements,
+                  ExcMessage("matrix-free row bounds need tangent rows"));
+      bounds.reinit(owned, comm);
+      double                       *b = bounds.trilinos_vector()[0];
+      std::vector<global_dof_index> cols;
+      std::vector<double>           values;
+      for_each_free_fe_row(cols, values, [&](const global_dof_index row) {
+        for (const double v : values)
+          b[owned.index_within_set(row)] += std::abs(v);
+      });
+      const PDModels::NodalField<dim> field =
+        nodal_field(model->linear() ? u_ghosted : u_tangent);
+      for_each_tangent_row(field, [&](const std::size_t o, const auto &blocks) {
+        const unsigned int k     = families.owners[o];
+        std::size_t        block = 0;
+        const auto         add   = [&](const unsigned int node, const auto &B) {
+          for (unsigned int i = 0; i < dim; ++i)
+            if (!dof_fixed[node_dof[k][i]])
+              for (unsigned int j = 0; j < dim; ++j)
+                if (!dof_fixed[node_dof[node][j]])
+                  b[owned_lid[k][i]] += std::abs(B[i][j]);
+        };
+        add(k, blocks[0]);
+        for (std::size_t j = families.offsets[o]; j < families.offsets[o + 1];
+             ++j)
+          if (families.intact[j])
+            add(families.members[j], blocks[++block]);
+      });
+      for (unsigned int i = 0; i < held_lid.size(); ++i)
+        b[held_lid[i]] += held_value[i];
+    }
+
+    template <int dim>
+    Drivers::StabilityReport
+    CoupledSystem<dim>::Impl::matrix_free_stability()
+    {
+      // Without a matrix there is no inertia: the Ritz values of the last
+      // CG solve of the step (at its last Newton iterate, within the
+      // residual tolerance of the state tested) lie inside the spectrum of
+      // P^-1 K, which has K's inertia. A negative one proves K indefinite;
+      // none is necessary for stability, not a proof of it. Where the step
+      // solved nothing (its first state was in equilibrium), a CG solve
+      // with a vector of ones at the state gives them; one that diverges
+      // there finds the tangent singular or indefinite.
+      AssertThrow(settings.linear_solver.conjugate_gradients(),
+                  ExcMessage("the matrix-free stability check needs CG"));
+      Drivers::StabilityReport report;
+      if (!cg_solved_since_check || !solver.last_ritz_values().known)
+        {
+          Vector b(owned, comm), x(owned, comm);
+          b = 1.;
+          try
+            {
+              solve_on_path(x, b, 0.);
+            }
+          catch (const RunFailure &e)
+            {
+              if (e.exit_state != "linear solver diverged")
+                throw;
+              report.singular = true;
+            }
+        }
+      cg_solved_since_check                        = false;
+      const Solvers::LinearSolver::RitzValues ritz = solver.last_ritz_values();
+      report.n_negative = ritz.known ? ritz.n_negative : 0;
+      if (report.n_negative > 0)
+        report.singular = false;
+      report.smallest_relative_pivot =
+        ritz.known && ritz.largest > 0. ? ritz.smallest / ritz.largest : 0.;
+      return report;
+    }
+
+    template <int dim>
     Drivers::StabilityReport
     CoupledSystem<dim>::check_stability()
     {
       Impl &s = *impl;
-      AssertThrow(s.model->symmetric() && !s.matrix_free,
-                  ExcMessage("the inertia check needs an assembled symmetric "
-                             "tangent"));
+      AssertThrow(s.model->symmetric(),
+                  ExcMessage("the stability check needs a symmetric tangent"));
+      if (s.matrix_free)
+        return s.matrix_free_stability();
       // The tangent at the last residual's state (that residual may have
       // only checked convergence and not assembled it).
       if (s.tangent_stale || !s.model->linear() ||
@@ -573,30 +639,34 @@ namespace pdfem
       return report;
     }
 
-#define INSTANTIATE(dim)                                                              \
-  template void   CoupledSystem<dim>::Impl::assemble_fe_matrix();                     \
-  template void   CoupledSystem<dim>::Impl::assemble_auxiliary();                     \
-  template void   CoupledSystem<dim>::Impl::update_held();                            \
-  template double CoupledSystem<dim>::Impl::held_diagonal(global_dof_index)           \
-    const;                                                                            \
-  template void CoupledSystem<dim>::Impl::assemble_external(double);                  \
-  template void CoupledSystem<dim>::Impl::assemble_tangent();                         \
-  template void CoupledSystem<dim>::Impl::add_to_matrix(                              \
-    TrilinosWrappers::SparseMatrix &,                                                 \
-    const std::vector<global_dof_index> &,                                            \
-    const std::vector<global_dof_index> &,                                            \
-    const std::vector<double> &,                                                      \
-    bool) const;                                                                      \
-  template void   CoupledSystem<dim>::apply_dirichlet(Vector &, double) const;        \
-  template double CoupledSystem<dim>::residual(const Vector &,                        \
-                                               double,                                \
-                                               Vector &,                              \
-                                               bool);                                 \
-  template double CoupledSystem<dim>::force_scale() const;                            \
-  template Drivers::StabilityReport CoupledSystem<dim>::check_stability();            \
-  template unsigned int             CoupledSystem<dim>::solve_linear(Vector &,        \
-                                                         const Vector &); \
-  template void CoupledSystem<dim>::stiffness_row_bounds(Vector &);
+#define INSTANTIATE(dim)                                                       \
+  template void   CoupledSystem<dim>::Impl::assemble_fe_matrix();              \
+  template void   CoupledSystem<dim>::Impl::assemble_auxiliary();              \
+  template void   CoupledSystem<dim>::Impl::update_held();                     \
+  template double CoupledSystem<dim>::Impl::held_diagonal(global_dof_index)    \
+    const;                                                                     \
+  template void CoupledSystem<dim>::Impl::assemble_external(double);           \
+  template void CoupledSystem<dim>::Impl::assemble_tangent();                  \
+  template void CoupledSystem<dim>::Impl::add_to_matrix(                       \
+    TrilinosWrappers::SparseMatrix &,                                          \
+    const std::vector<global_dof_index> &,                                     \
+    const std::vector<global_dof_index> &,                                     \
+    const std::vector<double> &,                                               \
+    bool) const;                                                               \
+  template void   CoupledSystem<dim>::apply_dirichlet(Vector &, double) const; \
+  template double CoupledSystem<dim>::residual(const Vector &,                 \
+                                               double,                         \
+                                               Vector &,                       \
+                                               bool);                          \
+  template double CoupledSystem<dim>::force_scale() const;                     \
+  template Drivers::StabilityReport CoupledSystem<dim>::check_stability();     \
+  template Drivers::StabilityReport                                            \
+                CoupledSystem<dim>::Impl::matrix_free_stability();             \
+  template void CoupledSystem<dim>::Impl::matrix_free_row_bounds(Vector &)     \
+    const;                                                                     \
+  template unsigned int CoupledSystem<dim>::solve_linear(Vector &,             \
+                                                         const Vector &);      \
+  template void         CoupledSystem<dim>::stiffness_row_bounds(Vector &);
     PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace Coupling

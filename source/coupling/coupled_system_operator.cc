@@ -105,7 +105,8 @@ namespace pdfem
     void
     CoupledSystem<dim>::Impl::compute_pd_forces(
       const TrilinosWrappers::MPI::Vector &x,
-      const std::function<void()>         &fe_product) const
+      const std::function<void()>         &fe_product,
+      const TrilinosWrappers::MPI::Vector *tangent_state) const
     {
       // The model's rows, chunk by chunk on the threads; decoupled owners
       // (held) get none. A model that evaluates all owners at once does it
@@ -150,8 +151,13 @@ namespace pdfem
           for_each_pd_chunk(fe_product, owners);
           return;
         }
+      const PDModels::NodalField<dim> state =
+        tangent_state ? nodal_field(*tangent_state) : field;
       const auto owners = [&](const std::size_t begin, const std::size_t end) {
-        model->forces(begin, end, field, pd_force.data());
+        if (tangent_state)
+          model->tangent_products(begin, end, state, field, pd_force.data());
+        else
+          model->forces(begin, end, field, pd_force.data());
         for (std::size_t o = begin; o < end; ++o)
           if (decoupled[o])
             for (unsigned int c = 0; c < dim; ++c)
@@ -235,7 +241,12 @@ namespace pdfem
       for (unsigned int i = 0; i < held_lid.size(); ++i)
         xm[held_lid[i]] = 0.;
       import_ghosts(x_masked, x_ghosted);
-      compute_pd_forces(x_ghosted, [&] { fe_matrix.vmult(y, x_masked); });
+      // A nonlinear model: the products of its tangent at the state of the
+      // last residual that asked for one (Layout::tangent_products).
+      compute_pd_forces(
+        x_ghosted,
+        [&] { fe_matrix.vmult(y, x_masked); },
+        model->linear() ? nullptr : &u_tangent);
       add_pd_forces(y);
       double *yv = y.trilinos_vector()[0];
       for (unsigned int i = 0; i < held_lid.size(); ++i)
@@ -249,8 +260,9 @@ namespace pdfem
       // D_k = FE diagonal block + PD block d(row k)/d(u_k); held DoFs get
       // their diagonal entry alone.
       block_inverse.assign(owned_nodes.size(), Tensor<2, dim>());
-      const PDModels::NodalField<dim> field = nodal_field(u_ghosted);
-      std::vector<Tensor<2, dim>>     row;
+      const PDModels::NodalField<dim> field =
+        nodal_field(model->linear() ? u_ghosted : u_tangent);
+      std::vector<Tensor<2, dim>> row;
       // Family-element models: the diagonal blocks of every family a node
       // belongs to, gathered at its owner column by column.
       std::vector<TrilinosWrappers::MPI::Vector> element_diagonal;

@@ -188,12 +188,21 @@ namespace pdfem
                          "pdlsm's)",
                          "direct or gmres (or Peridynamics/Model = pdlsm "
                          "energy, which is symmetric)");
-      if (matrix_free && !model->linear())
+      if (matrix_free && !model->linear() && !layout.tangent_products)
         throw InputError(settings.source_file,
                          "Linear solver/Preconditioner",
                          "'amg fe' solves without the assembled tangent, "
-                         "which a nonlinear PD model needs",
+                         "which this nonlinear PD model needs (it gives no "
+                         "products with its tangent)",
                          "amg, ilu, or Linear solver/Type = direct");
+      if (matrix_free && !model->linear() &&
+          !settings.linear_solver.conjugate_gradients())
+        throw InputError(settings.source_file,
+                         "Linear solver/Type",
+                         "a nonlinear PD model's matrix-free path ('amg fe') "
+                         "is CG: its tangent is symmetric, and CG's Ritz "
+                         "values are its stability check",
+                         "cg, or direct");
 
       {
         TrilinosWrappers::SparsityPattern sp(owned, owned, relevant, comm);

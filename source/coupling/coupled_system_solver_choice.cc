@@ -142,7 +142,8 @@ namespace pdfem
           // the block-Jacobi correction, which reads the PD tangent's
           // diagonal blocks, is made for GMRES only: a model of forces
           // only is solved by CG with products alone.
-          const bool correct = !settings.linear_solver.conjugate_gradients();
+          const bool correct    = !settings.linear_solver.conjugate_gradients();
+          cg_solved_since_check = !correct;
           if (correct && block_inverse.empty())
             make_block_jacobi();
           Solvers::LinearSolver::Operator correction;

@@ -59,12 +59,13 @@ namespace pdfem
     void
     check_relaxation_traits(const RunTraits &traits)
     {
-      if (!traits.assembled_matrix)
+      if (!traits.assembled_matrix && !traits.tangent_rows)
         throw InputError(traits.file,
                          "Linear solver/Type",
                          "dynamic relaxation takes its fictitious density "
-                         "from the assembled tangent, which the "
-                         "matrix-free solver does not build",
+                         "from the rows of the tangent, which the "
+                         "matrix-free solver neither builds nor, for the " +
+                           traits.model_name + " model, bounds row by row",
                          "direct, cg or gmres with an assembled "
                          "preconditioner");
     }

@@ -259,6 +259,7 @@ namespace pdfem
         l.smooth_degradation = degradation.active;
         // A bar's bonds along x give no stiffness in y.
         l.stiffless_component = bar ? 1 : -1;
+        l.tangent_products    = true;
         return l;
       }
 
@@ -393,6 +394,74 @@ namespace pdfem
                   const double a = c * T * (inverse_length[j] - 1. / l);
                   for (unsigned int d = 0; d < dim; ++d)
                     sum[d] += weight[j] * (a * r[d]);
+                }
+            for (unsigned int d = 0; d < dim; ++d)
+              f_out[dim * o + d] = -bond_volume[k] * sum[d];
+          }
+      }
+
+      void
+      tangent_products(const std::size_t      begin,
+                       const std::size_t      end,
+                       const NodalField<dim> &u,
+                       const NodalField<dim> &v,
+                       double                *f_out) const override
+      {
+        // Row k of K(u) v = -V_k sum_m w_km K_km (v_m - v_k) with the bond
+        // stiffness of BondBasedBond<dim>::stiffness() applied without
+        // forming it: K w = (a - b) (r . w) r / l^2 + b w, a = c (T + s T')
+        // / L, b = c T s / l. Below the onset (T = 1, T' = 0) a = c / L and
+        // b = c (1/L - 1/l), the forces() kernel's scalar. One product
+        // costs about one force evaluation.
+        const PD::Families &f            = *this->region.families;
+        const auto         &x            = *this->region.position;
+        const double       *uv           = u.values;
+        const double       *vv           = v.values;
+        const auto         *id           = u.local_index;
+        const bool          degrading    = degradation.active;
+        const double        onset_margin = (1. - 1e-12) * degradation.onset;
+        for (std::size_t o = begin; o < end; ++o)
+          {
+            const unsigned int k = f.owners[o];
+            double             uk[dim], vk[dim], sum[dim] = {};
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                uk[d] = uv[id[k][d]];
+                vk[d] = vv[id[k][d]];
+              }
+            for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+              if (f.intact[j])
+                {
+                  const unsigned int m = f.members[j];
+                  double             r[dim], w[dim], rr = 0., rw = 0.;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    {
+                      r[d] = (x[m][d] - x[k][d]) + (uv[id[m][d]] - uk[d]);
+                      w[d] = vv[id[m][d]] - vk[d];
+                      rr += r[d] * r[d];
+                      rw += r[d] * w[d];
+                    }
+                  const double L = bond_length[j], l = std::sqrt(rr);
+                  double       axial = c * inverse_length[j],
+                         cross       = c * (inverse_length[j] - 1. / l);
+                  // As in forces(): T = 1 where l - L is clearly below s_m L.
+                  if (degrading && ((irreversible &&
+                                     largest_stretch[j] > degradation.onset) ||
+                                    l - L > onset_margin * L))
+                    {
+                      const double s = (l - L) / L;
+                      const double s_h =
+                        irreversible ? std::max(s, largest_stretch[j]) : s;
+                      const double T = degradation.factor(s_h);
+                      // T' only while the bond is loading (tangent_row()).
+                      const double dT =
+                        s >= s_h ? degradation.derivative(s) : 0.;
+                      axial = c * (T + s * dT) / L;
+                      cross = c * T * s / l;
+                    }
+                  const double along = (axial - cross) * rw / rr;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    sum[d] += weight[j] * (along * r[d] + cross * w[d]);
                 }
             for (unsigned int d = 0; d < dim; ++d)
               f_out[dim * o + d] = -bond_volume[k] * sum[d];

@@ -101,6 +101,19 @@ namespace pdfem
 
     template <int dim>
     void
+    Interface<dim>::tangent_products(std::size_t,
+                                     std::size_t,
+                                     const NodalField<dim> &,
+                                     const NodalField<dim> &,
+                                     double *) const
+    {
+      throw std::logic_error(
+        "this PD model does not provide tangent_products() (its Layout "
+        "says tangent_products = false)");
+    }
+
+    template <int dim>
+    void
     Interface<dim>::family_forces(std::size_t,
                                   const NodalField<dim> &,
                                   std::vector<dealii::Tensor<1, dim>> &) const

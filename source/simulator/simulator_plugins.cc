@@ -19,9 +19,11 @@ namespace pdfem
                   const double             density,
                   const Solvers::Settings &linear_solver,
                   const std::string       &driver_name,
-                  const bool               smooth_degradation)
+                  const bool               smooth_degradation,
+                  const bool               tangent_rows)
   {
     Drivers::RunTraits traits;
+    traits.tangent_rows       = tangent_rows;
     traits.smooth_degradation = smooth_degradation;
     traits.file               = file;
     traits.dim                = dim;
@@ -194,7 +196,9 @@ namespace pdfem
         linear_solver.resolve(nonlinear_model,
                               plugins.driver->needs_assembled_matrix()),
         driver_settings.type,
-        plugins.model && plugins.model->layout().smooth_degradation),
+        plugins.model && plugins.model->layout().smooth_degradation,
+        plugins.model && plugins.model->layout().tangent &&
+          !plugins.model->layout().family_elements),
       fracture);
     return plugins;
   }

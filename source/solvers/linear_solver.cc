@@ -8,6 +8,7 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/tridiagonal_matrix.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -399,6 +400,61 @@ namespace pdfem
         amg_stale = true;
     }
 
+    namespace
+    {
+      /**
+       * The Lanczos matrix of a CG solve, from its coefficients (as
+       * deal.II's SolverCG builds it for its eigenvalue estimates, which it
+       * returns as absolute values): diagonal 1/alpha_i + beta_(i-1) /
+       * alpha_(i-1), off-diagonal sqrt(beta_i) / alpha_i. Its eigenvalues,
+       * signed, are Ritz values of P^-1 K.
+       */
+      struct LanczosMatrix
+      {
+        std::vector<double> diagonal, off_diagonal;
+        double              beta_over_alpha = 0.;
+
+        void
+        add(const double alpha, const double beta)
+        {
+          diagonal.push_back(1. / alpha + beta_over_alpha);
+          beta_over_alpha = beta / alpha;
+          off_diagonal.push_back(std::sqrt(beta) / alpha);
+        }
+
+        /// Into @p ritz, where the solve took two iterations or more.
+        void
+        ritz_values(LinearSolver::RitzValues &ritz) const
+        {
+          const std::size_t n = diagonal.size();
+          if (n == 0 ||
+              !std::all_of(diagonal.begin(),
+                           diagonal.end(),
+                           [](const double d) { return std::isfinite(d); }))
+            return;
+          TridiagonalMatrix<double> T(n, true);
+          for (std::size_t i = 0; i < n; ++i)
+            {
+              T(i, i) = diagonal[i];
+              if (i + 1 < n)
+                T(i, i + 1) = off_diagonal[i];
+            }
+          T.compute_eigenvalues();
+          ritz            = LinearSolver::RitzValues();
+          ritz.known      = true;
+          ritz.smallest   = T.eigenvalue(0);
+          ritz.largest    = T.eigenvalue(0);
+          ritz.n_negative = 0;
+          for (std::size_t i = 0; i < n; ++i)
+            {
+              ritz.smallest = std::min(ritz.smallest, T.eigenvalue(i));
+              ritz.largest  = std::max(ritz.largest, T.eigenvalue(i));
+              ritz.n_negative += T.eigenvalue(i) < 0.;
+            }
+        }
+      };
+    } // namespace
+
     unsigned int
     LinearSolver::solve_cg(const TrilinosWrappers::SparseMatrix &K,
                            TrilinosWrappers::MPI::Vector        &x,
@@ -513,11 +569,19 @@ namespace pdfem
                             false,
                             false);
       x = 0.;
+      LanczosMatrix lanczos;
+      ritz.known = false;
       try
         {
           if (settings.conjugate_gradients())
-            SolverCG<TrilinosWrappers::MPI::Vector>(control).solve(
-              OperatorWrapper{K}, x, b, P);
+            {
+              SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+              cg.connect_coefficients_slot(
+                [&lanczos](const double alpha, const double beta) {
+                  lanczos.add(alpha, beta);
+                });
+              cg.solve(OperatorWrapper{K}, x, b, P);
+            }
           else
             SolverGMRES<TrilinosWrappers::MPI::Vector>(
               control,
@@ -527,6 +591,7 @@ namespace pdfem
         }
       catch (const SolverControl::NoConvergence &e)
         {
+          lanczos.ritz_values(ritz);
           throw RunFailure(
             "linear solver diverged",
             std::string(settings.conjugate_gradients() ? "CG" : "GMRES") +
@@ -535,6 +600,7 @@ namespace pdfem
               " iterations (residual reduced by " +
               number(e.last_residual / b_norm) + ")");
         }
+      lanczos.ritz_values(ritz);
       if (!std::isfinite(x.l2_norm()))
         throw RunFailure("linear solver diverged",
                          "the solution of the linear system is not finite");

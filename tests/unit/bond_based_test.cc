@@ -7,7 +7,8 @@
 //   for intact, degrading and compressed bonds;
 // - the model's tangent rows = central differences of its force rows on a
 //   plate whose bonds are intact, degrading and compressed, with and
-//   without broken bonds, loading and unloading (after a committed state);
+//   without broken bonds, loading and unloading (after a committed state),
+//   and the matrix-free tangent_products() = those rows times a vector;
 // - the history: committed stretches keep bonds softened, bonds past s_c
 //   are reported failed, a reversible model forgets.
 #include <pdfem/base/exceptions.h>
@@ -256,6 +257,41 @@ namespace
     return n;
   }
 
+  /// max |tangent_products(u, v) - tangent rows times v| relative to the
+  /// largest product, at a random v: the matrix-free products apply the
+  /// rows that the central differences check.
+  double
+  products_error(const PDModels::Interface<2> &model,
+                 const PD::Families           &f,
+                 const Field<>                &u)
+  {
+    const std::size_t                      n = f.owners.size();
+    Field<>                                v(u.values.size() / 2);
+    std::mt19937                           random(5);
+    std::uniform_real_distribution<double> value(-1., 1.);
+    for (double &x : v.values)
+      x = value(random);
+    std::vector<double> products(2 * n);
+    model.tangent_products(0, n, u.field(), v.field(), products.data());
+    std::vector<Tensor<2, 2>> blocks;
+    double                    error = 0., scale = 0.;
+    for (std::size_t o = 0; o < n; ++o)
+      {
+        model.tangent_row(o, u.field(), blocks);
+        Tensor<1, 2> Kv = blocks[0] * v.field()[f.owners[o]];
+        std::size_t  b  = 0;
+        for (std::size_t j = f.offsets[o]; j < f.offsets[o + 1]; ++j)
+          if (f.intact[j])
+            Kv += blocks[++b] * v.field()[f.members[j]];
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            error = std::max(error, std::abs(products[2 * o + c] - Kv[c]));
+            scale = std::max(scale, std::abs(Kv[c]));
+          }
+      }
+    return error / scale;
+  }
+
   TEST(BondBased, TangentRowsAreCentralDifferencesOfTheForceRows)
   {
     for (const bool broken : {false, true})
@@ -273,6 +309,8 @@ namespace
         EXPECT_GT(census[2], 50u); // degrading
         EXPECT_LT(tangent_error(*model, f, u, 1e-9), 1e-6)
           << (broken ? "with broken bonds" : "");
+        EXPECT_LT(products_error(*model, f, u), 1e-12)
+          << (broken ? "with broken bonds" : "");
 
         // After a committed state 1.5 times larger, the bonds unload (no
         // T' term) and keep the softening of their largest stretch.
@@ -281,6 +319,8 @@ namespace
           v *= 1.5;
         model->commit_state(larger.field());
         EXPECT_LT(tangent_error(*model, f, u, 1e-9), 1e-6)
+          << "unloading" << (broken ? ", with broken bonds" : "");
+        EXPECT_LT(products_error(*model, f, u), 1e-12)
           << "unloading" << (broken ? ", with broken bonds" : "");
       }
   }

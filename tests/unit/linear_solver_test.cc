@@ -3,7 +3,8 @@
 // with the same matrix, factorises again (numerically, the analysis kept)
 // after matrix_changed() and analyses again after matrix_rebuilt(): solves
 // after a change must use the new entries (a kept factorisation of the old
-// ones would give the old solution).
+// ones would give the old solution). CG reports the signed Ritz values of
+// its Lanczos matrix (the matrix-free stability check reads them).
 #include <pdfem/base/exceptions.h>
 #include <pdfem/solvers/linear_solver.h>
 
@@ -241,6 +242,56 @@ namespace
           }
         EXPECT_EQ(solver.n_factorizations(), 3u);
         EXPECT_EQ(solver.n_reused_factorization_solves(), 2u);
+      }
+  }
+
+  TEST(LinearSolver, ConjugateGradientsReportSignedRitzValues)
+  {
+    // (-1, d, -1) of size n has the eigenvalues d - 2 cos(k pi / (n + 1)),
+    // k = 1 .. n: positive definite for d = 2.5, indefinite (two negative)
+    // for d = 1.95. CG's Ritz values lie inside the spectrum, signed.
+    const unsigned int n      = 40;
+    const IndexSet     owned  = owned_rows(n);
+    const double       lowest = -2. * std::cos(M_PI / (n + 1)),
+                 highest      = 2. * std::cos(M_PI / (n + 1));
+    for (const double d : {2.5, 1.95})
+      {
+        TrilinosWrappers::SparseMatrix A;
+        make_tridiagonal(A, owned, d);
+        pdfem::Solvers::Settings settings;
+        settings.type      = "cg";
+        settings.tolerance = 1e-12;
+        pdfem::Solvers::LinearSolver solver(settings);
+        EXPECT_FALSE(solver.last_ritz_values().known);
+        TrilinosWrappers::MPI::Vector b(owned, MPI_COMM_WORLD), x(b);
+        for (const auto i : owned)
+          b[i] = 1. + 0.1 * i;
+        b.compress(VectorOperation::insert);
+        const pdfem::Solvers::LinearSolver::Operator product =
+          [&A](TrilinosWrappers::MPI::Vector       &y,
+               const TrilinosWrappers::MPI::Vector &v) { A.vmult(y, v); };
+        const pdfem::Solvers::LinearSolver::Operator identity =
+          [](TrilinosWrappers::MPI::Vector       &z,
+             const TrilinosWrappers::MPI::Vector &r) { z = r; };
+        try
+          {
+            solver.solve(product, x, b, identity, 0.);
+          }
+        catch (const pdfem::RunFailure &)
+          {
+            // CG may fail on the indefinite matrix; its Ritz values stay.
+          }
+        const auto ritz = solver.last_ritz_values();
+        ASSERT_TRUE(ritz.known) << d;
+        EXPECT_GE(ritz.smallest, d + lowest - 1e-9) << d;
+        EXPECT_LE(ritz.largest, d + highest + 1e-9) << d;
+        if (d > 2.)
+          {
+            EXPECT_EQ(ritz.n_negative, 0u);
+            EXPECT_NEAR(ritz.smallest, d + lowest, 1e-6);
+          }
+        else
+          EXPECT_GE(ritz.n_negative, 1u);
       }
   }
 

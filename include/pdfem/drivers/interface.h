@@ -171,6 +171,10 @@ namespace pdfem
       bool has_mass = false;
       /// The linear solver assembles the coupled matrix (not 'amg fe').
       bool assembled_matrix = true;
+      /// The PD model gives its tangent row by row (tangent_row()), so
+      /// that the matrix-free path bounds the tangent's rows without
+      /// assembling it (SystemInterface::stiffness_row_bounds()).
+      bool tangent_rows = false;
       /// The PD model degrades smoothly (Host::degradation_state() is
       /// available).
       bool smooth_degradation = false;

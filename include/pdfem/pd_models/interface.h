@@ -124,6 +124,11 @@ namespace pdfem
       /// model of forces only says false, and make_plugins() refuses it a
       /// driver that needs one (Drivers::Interface::needs_tangent()).
       bool tangent = true;
+      /// A nonlinear row model gives products with its tangent without
+      /// assembling it (tangent_products()), so that the matrix-free
+      /// Krylov paths ('amg fe', Linear solver) can solve its Newton
+      /// systems. A linear model needs none: its products are forces().
+      bool tangent_products = false;
       /// Single bonds of the model can be cut and broken (bonds_changed()).
       /// A model that cannot (node masks only) says false, and
       /// make_plugins() refuses it pre-existing cracks and crack criteria.
@@ -327,6 +332,20 @@ namespace pdfem
       tangent_row(std::size_t                          o,
                   const NodalField<dim>               &u,
                   std::vector<dealii::Tensor<2, dim>> &blocks) const;
+
+      /**
+       * With Layout::tangent_products: f = K(@p u) @p v on the owners
+       * [@p begin, @p end), into f[dim o + c] (overwritten), with K(u) the
+       * tangent whose rows tangent_row() gives, sum over the row's blocks
+       * of block times v at its column; without assembling it. The
+       * default throws std::logic_error.
+       */
+      virtual void
+      tangent_products(std::size_t            begin,
+                       std::size_t            end,
+                       const NodalField<dim> &u,
+                       const NodalField<dim> &v,
+                       double                *f) const;
 
       /**
        * With Layout::family_elements: the force of family @p o at @p u on

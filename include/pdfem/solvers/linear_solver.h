@@ -149,6 +149,28 @@ namespace pdfem
         return analyses;
       }
 
+      /**
+       * The eigenvalue estimates (Ritz values) of the preconditioned
+       * operator P^-1 K that the last CG solve's Lanczos coefficients give:
+       * they lie inside P^-1 K's spectrum, and P^-1 K (P symmetric
+       * positive definite) has the inertia of K, so a negative one proves
+       * K indefinite. `known` false where the last solve was not CG or
+       * took fewer than two iterations.
+       */
+      struct RitzValues
+      {
+        bool         known      = false;
+        double       smallest   = 0.;
+        double       largest    = 0.;
+        unsigned int n_negative = 0;
+      };
+
+      RitzValues
+      last_ritz_values() const
+      {
+        return ritz;
+      }
+
       /// The matrix the AMG was built from has new entries: the next solve
       /// rebuilds the hierarchy.
       void
@@ -218,6 +240,7 @@ namespace pdfem
       bool                                          amg_stale  = false;
       unsigned int                                  amg_fresh_iterations = 0;
       unsigned int                                  last_iterations      = 0;
+      mutable RitzValues                            ritz;
       /// The direct path's factorisation of *direct_matrix (nullptr: none
       /// kept), and the control SolverDirect refers to.
       /// The direct path's Amesos solver, its analysis of a matrix and,
