@@ -55,23 +55,9 @@ namespace pdfem
         return std::isfinite(x.l2_norm());
       }
 
-      /**
-       * The forcing terms of the inexact Newton iteration (Eisenstat &
-       * Walker, SIAM J. Sci. Comput. 17, 1996, choice 2 with gamma = 0.9,
-       * alpha = 2 and its safeguard): an iterative linear solve of
-       * iteration k stops once |r_k - K du| <= eta_k |r_k|, with
-       *
-       *   eta_0 = eta_max, eta_k = 0.9 (|r_k| / |r_(k-1)|)^2,
-       *   eta_k >= 0.9 eta_(k-1)^2 where that exceeds 0.1,
-       *   eta_k <= eta_max = 0.1,
-       *
-       * so that the linear solves are loose while the nonlinear residual
-       * is far from zero and tight where Newton converges quadratically.
-       * On the 3D cantilever of Hu et al. (specs/003 §5.1, 1 cm lattice,
-       * matrix-free CG) solves to 1e-10 of each residual took 436 CG
-       * iterations over 4 Newton iterations, with the forcing terms 301 over
-       * 5 (doc/changes/20261126_matrix_free_bond_based.md).
-       */
+      /// Inexact Newton's forcing terms (Eisenstat & Walker 1996, choice 2,
+      /// gamma 0.9, alpha 2, safeguarded, at most 0.1): an iterative solve of
+      /// iteration k stops at eta_k |r_k| (theory.md §13.7).
       constexpr double largest_forcing = 0.1;
 
       double
