@@ -242,10 +242,9 @@ namespace pdfem
 
       // PD rows: the model's tangent row of each owner, at the state of the
       // last residual (nonlinear models) — its own block first.
-      const PDModels::NodalField<dim> field =
-        nodal_field(model->linear() ? u_ghosted : u_tangent);
-      std::vector<global_dof_index> rows(dim);
-      std::vector<double>           K;
+      const PDModels::NodalField<dim> field = tangent_field();
+      std::vector<global_dof_index>   rows(dim);
+      std::vector<double>             K;
       if (layout.family_elements)
         {
           // Each family's blocks on all its nodes, like a cell's.
@@ -552,8 +551,7 @@ namespace pdfem
         for (const double v : values)
           b[owned.index_within_set(row)] += std::abs(v);
       });
-      const PDModels::NodalField<dim> field =
-        nodal_field(model->linear() ? u_ghosted : u_tangent);
+      const PDModels::NodalField<dim> field = tangent_field();
       for_each_tangent_row(field, [&](const std::size_t o, const auto &blocks) {
         const unsigned int k     = families.owners[o];
         std::size_t        block = 0;
@@ -588,8 +586,11 @@ namespace pdfem
       // there finds the tangent singular or indefinite.
       AssertThrow(settings.linear_solver.conjugate_gradients(),
                   ExcMessage("the matrix-free stability check needs CG"));
-      Drivers::StabilityReport report;
-      if (!cg_solved_since_check || !solver.last_ritz_values().known)
+      bool                              diverged = false;
+      Solvers::LinearSolver::RitzValues ritz;
+      if (cg_solved_since_check)
+        ritz = solver.last_ritz_values();
+      if (!ritz.known)
         {
           Vector b(owned, comm), x(owned, comm);
           b = 1.;
@@ -601,14 +602,14 @@ namespace pdfem
             {
               if (e.exit_state != "linear solver diverged")
                 throw;
-              report.singular = true;
+              diverged = true;
             }
+          ritz = solver.last_ritz_values();
         }
-      cg_solved_since_check                        = false;
-      const Solvers::LinearSolver::RitzValues ritz = solver.last_ritz_values();
+      cg_solved_since_check = false;
+      Drivers::StabilityReport report;
       report.n_negative = ritz.known ? ritz.n_negative : 0;
-      if (report.n_negative > 0)
-        report.singular = false;
+      report.singular   = diverged && report.n_negative == 0;
       report.smallest_relative_pivot =
         ritz.known && ritz.largest > 0. ? ritz.smallest / ritz.largest : 0.;
       return report;

@@ -221,6 +221,14 @@ namespace pdfem
       {
         return {x.trilinos_vector()[0], relevant_lid.data()};
       }
+      /// The state the tangent is taken at, as the model reads it: the last
+      /// internal force's for a linear model (any state), u_tangent (the
+      /// last residual's) for a nonlinear one.
+      PDModels::NodalField<dim>
+      tangent_field() const
+      {
+        return nodal_field(model->linear() ? u_ghosted : u_tangent);
+      }
       /// Tractions and body force at load factor @p t, into f_ext.
       void
       assemble_external(double t);

@@ -260,9 +260,8 @@ namespace pdfem
       // D_k = FE diagonal block + PD block d(row k)/d(u_k); held DoFs get
       // their diagonal entry alone.
       block_inverse.assign(owned_nodes.size(), Tensor<2, dim>());
-      const PDModels::NodalField<dim> field =
-        nodal_field(model->linear() ? u_ghosted : u_tangent);
-      std::vector<Tensor<2, dim>> row;
+      const PDModels::NodalField<dim> field = tangent_field();
+      std::vector<Tensor<2, dim>>     row;
       // Family-element models: the diagonal blocks of every family a node
       // belongs to, gathered at its owner column by column.
       std::vector<TrilinosWrappers::MPI::Vector> element_diagonal;

@@ -355,13 +355,10 @@ namespace pdfem
         // Hu et al. (square_hole.prm, 75 k bonds) relaxed in 40 load steps (8
         // 378 iterations): see doc/changes/20261126_bond_based_kernel.md for
         // the times.
-        const PD::Families &f            = *this->region.families;
-        const auto         &x            = *this->region.position;
-        const double       *uv           = u.values;
-        const auto         *id           = u.local_index;
-        const bool          degrading    = degradation.active;
-        const double        onset        = degradation.onset;
-        const double        onset_margin = (1. - 1e-12) * onset;
+        const PD::Families &f  = *this->region.families;
+        const auto         &x  = *this->region.position;
+        const double       *uv = u.values;
+        const auto         *id = u.local_index;
         for (std::size_t o = begin; o < end; ++o)
           {
             const unsigned int k = f.owners[o];
@@ -379,18 +376,9 @@ namespace pdfem
                       rr += r[d] * r[d];
                     }
                   const double L = bond_length[j], l = std::sqrt(rr);
-                  // T = 1 below the onset: decided without the division
-                  // where l - L is clearly below s_m L (the margin keeps
-                  // the rounded s below s_m too).
-                  double T = 1.;
-                  if (degrading &&
-                      ((irreversible && largest_stretch[j] > onset) ||
-                       l - L > onset_margin * L))
-                    {
-                      const double s = (l - L) / L;
-                      T              = degradation.factor(
-                        irreversible ? std::max(s, largest_stretch[j]) : s);
-                    }
+                  double       T = 1.;
+                  if (may_degrade(j, L, l))
+                    T = degradation.factor(history_stretch(j, (l - L) / L));
                   const double a = c * T * (inverse_length[j] - 1. / l);
                   for (unsigned int d = 0; d < dim; ++d)
                     sum[d] += weight[j] * (a * r[d]);
@@ -413,13 +401,11 @@ namespace pdfem
         // / L, b = c T s / l. Below the onset (T = 1, T' = 0) a = c / L and
         // b = c (1/L - 1/l), the forces() kernel's scalar. One product
         // costs about one force evaluation.
-        const PD::Families &f            = *this->region.families;
-        const auto         &x            = *this->region.position;
-        const double       *uv           = u.values;
-        const double       *vv           = v.values;
-        const auto         *id           = u.local_index;
-        const bool          degrading    = degradation.active;
-        const double        onset_margin = (1. - 1e-12) * degradation.onset;
+        const PD::Families &f  = *this->region.families;
+        const auto         &x  = *this->region.position;
+        const double       *uv = u.values;
+        const double       *vv = v.values;
+        const auto         *id = u.local_index;
         for (std::size_t o = begin; o < end; ++o)
           {
             const unsigned int k = f.owners[o];
@@ -444,15 +430,11 @@ namespace pdfem
                   const double L = bond_length[j], l = std::sqrt(rr);
                   double       axial = c * inverse_length[j],
                          cross       = c * (inverse_length[j] - 1. / l);
-                  // As in forces(): T = 1 where l - L is clearly below s_m L.
-                  if (degrading && ((irreversible &&
-                                     largest_stretch[j] > degradation.onset) ||
-                                    l - L > onset_margin * L))
+                  if (may_degrade(j, L, l))
                     {
-                      const double s = (l - L) / L;
-                      const double s_h =
-                        irreversible ? std::max(s, largest_stretch[j]) : s;
-                      const double T = degradation.factor(s_h);
+                      const double s   = (l - L) / L;
+                      const double s_h = history_stretch(j, s);
+                      const double T   = degradation.factor(s_h);
                       // T' only while the bond is loading (tangent_row()).
                       const double dT =
                         s >= s_h ? degradation.derivative(s) : 0.;
@@ -651,8 +633,31 @@ namespace pdfem
                       const Tensor<1, dim> &xi,
                       const Tensor<1, dim> &eta) const
       {
-        const double s = BondBasedBond<dim>::stretch(xi, eta);
+        return history_stretch(j, BondBasedBond<dim>::stretch(xi, eta));
+      }
+
+      /// The stretch T is evaluated at for bond @p j at stretch @p s: the
+      /// largest accepted one with an irreversible history (theory.md
+      /// §13.2).
+      double
+      history_stretch(const std::size_t j, const double s) const
+      {
         return irreversible ? std::max(s, largest_stretch[j]) : s;
+      }
+
+      /**
+       * Can bond @p j (length @p L, deformed length @p l) have T < 1? False
+       * only where it is clearly below the onset, decided without the
+       * division s = (l - L) / L (the margin keeps the rounded s below s_m
+       * too): the kernels forces() and tangent_products() then take T = 1,
+       * T' = 0.
+       */
+      bool
+      may_degrade(const std::size_t j, const double L, const double l) const
+      {
+        return degradation.active &&
+               ((irreversible && largest_stretch[j] > degradation.onset) ||
+                l - L > (1. - 1e-12) * degradation.onset * L);
       }
 
       /**

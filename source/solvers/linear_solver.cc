@@ -400,60 +400,35 @@ namespace pdfem
         amg_stale = true;
     }
 
-    namespace
+    LinearSolver::RitzValues
+    LinearSolver::last_ritz_values() const
     {
-      /**
-       * The Lanczos matrix of a CG solve, from its coefficients (as
-       * deal.II's SolverCG builds it for its eigenvalue estimates, which it
-       * returns as absolute values): diagonal 1/alpha_i + beta_(i-1) /
-       * alpha_(i-1), off-diagonal sqrt(beta_i) / alpha_i. Its eigenvalues,
-       * signed, are Ritz values of P^-1 K.
-       */
-      struct LanczosMatrix
-      {
-        std::vector<double> diagonal, off_diagonal;
-        double              beta_over_alpha = 0.;
-
-        void
-        add(const double alpha, const double beta)
+      // The signed eigenvalues of the Lanczos matrix (LAPACK's stev).
+      RitzValues        ritz;
+      const std::size_t n = lanczos_diagonal.size();
+      if (n == 0 ||
+          !std::all_of(lanczos_diagonal.begin(),
+                       lanczos_diagonal.end(),
+                       [](const double d) { return std::isfinite(d); }))
+        return ritz;
+      TridiagonalMatrix<double> T(n, true);
+      for (std::size_t i = 0; i < n; ++i)
         {
-          diagonal.push_back(1. / alpha + beta_over_alpha);
-          beta_over_alpha = beta / alpha;
-          off_diagonal.push_back(std::sqrt(beta) / alpha);
+          T(i, i) = lanczos_diagonal[i];
+          if (i + 1 < n)
+            T(i, i + 1) = lanczos_off_diagonal[i];
         }
-
-        /// Into @p ritz, where the solve took two iterations or more.
-        void
-        ritz_values(LinearSolver::RitzValues &ritz) const
+      T.compute_eigenvalues();
+      ritz.known    = true;
+      ritz.smallest = ritz.largest = T.eigenvalue(0);
+      for (std::size_t i = 0; i < n; ++i)
         {
-          const std::size_t n = diagonal.size();
-          if (n == 0 ||
-              !std::all_of(diagonal.begin(),
-                           diagonal.end(),
-                           [](const double d) { return std::isfinite(d); }))
-            return;
-          TridiagonalMatrix<double> T(n, true);
-          for (std::size_t i = 0; i < n; ++i)
-            {
-              T(i, i) = diagonal[i];
-              if (i + 1 < n)
-                T(i, i + 1) = off_diagonal[i];
-            }
-          T.compute_eigenvalues();
-          ritz            = LinearSolver::RitzValues();
-          ritz.known      = true;
-          ritz.smallest   = T.eigenvalue(0);
-          ritz.largest    = T.eigenvalue(0);
-          ritz.n_negative = 0;
-          for (std::size_t i = 0; i < n; ++i)
-            {
-              ritz.smallest = std::min(ritz.smallest, T.eigenvalue(i));
-              ritz.largest  = std::max(ritz.largest, T.eigenvalue(i));
-              ritz.n_negative += T.eigenvalue(i) < 0.;
-            }
+          ritz.smallest = std::min(ritz.smallest, T.eigenvalue(i));
+          ritz.largest  = std::max(ritz.largest, T.eigenvalue(i));
+          ritz.n_negative += T.eigenvalue(i) < 0.;
         }
-      };
-    } // namespace
+      return ritz;
+    }
 
     unsigned int
     LinearSolver::solve_cg(const TrilinosWrappers::SparseMatrix &K,
@@ -569,16 +544,20 @@ namespace pdfem
                             false,
                             false);
       x = 0.;
-      LanczosMatrix lanczos;
-      ritz.known = false;
+      lanczos_diagonal.clear();
+      lanczos_off_diagonal.clear();
       try
         {
           if (settings.conjugate_gradients())
             {
               SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+              double                                  beta_over_alpha = 0.;
               cg.connect_coefficients_slot(
-                [&lanczos](const double alpha, const double beta) {
-                  lanczos.add(alpha, beta);
+                [this, &beta_over_alpha](const double alpha,
+                                         const double beta) {
+                  lanczos_diagonal.push_back(1. / alpha + beta_over_alpha);
+                  lanczos_off_diagonal.push_back(std::sqrt(beta) / alpha);
+                  beta_over_alpha = beta / alpha;
                 });
               cg.solve(OperatorWrapper{K}, x, b, P);
             }
@@ -591,7 +570,6 @@ namespace pdfem
         }
       catch (const SolverControl::NoConvergence &e)
         {
-          lanczos.ritz_values(ritz);
           throw RunFailure(
             "linear solver diverged",
             std::string(settings.conjugate_gradients() ? "CG" : "GMRES") +
@@ -600,7 +578,6 @@ namespace pdfem
               " iterations (residual reduced by " +
               number(e.last_residual / b_norm) + ")");
         }
-      lanczos.ritz_values(ritz);
       if (!std::isfinite(x.l2_norm()))
         throw RunFailure("linear solver diverged",
                          "the solution of the linear system is not finite");

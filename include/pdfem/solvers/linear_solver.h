@@ -154,8 +154,10 @@ namespace pdfem
        * operator P^-1 K that the last CG solve's Lanczos coefficients give:
        * they lie inside P^-1 K's spectrum, and P^-1 K (P symmetric
        * positive definite) has the inertia of K, so a negative one proves
-       * K indefinite. `known` false where the last solve was not CG or
-       * took fewer than two iterations.
+       * K indefinite. From the last solve of an operator (the solve()s
+       * taking an Operator): `known` false where that was GMRES or took
+       * fewer than two CG iterations. Computed when asked, from the
+       * coefficients the solve kept.
        */
       struct RitzValues
       {
@@ -166,10 +168,7 @@ namespace pdfem
       };
 
       RitzValues
-      last_ritz_values() const
-      {
-        return ritz;
-      }
+      last_ritz_values() const;
 
       /// The matrix the AMG was built from has new entries: the next solve
       /// rebuilds the hierarchy.
@@ -240,7 +239,12 @@ namespace pdfem
       bool                                          amg_stale  = false;
       unsigned int                                  amg_fresh_iterations = 0;
       unsigned int                                  last_iterations      = 0;
-      mutable RitzValues                            ritz;
+      /// The last CG solve's Lanczos matrix (diagonal 1/alpha_i +
+      /// beta_(i-1)/alpha_(i-1), off-diagonal sqrt(beta_i)/alpha_i, as
+      /// deal.II's SolverCG builds it for its estimates, which it returns
+      /// as absolute values) of the last solve of an operator; empty where
+      /// that was GMRES.
+      mutable std::vector<double> lanczos_diagonal, lanczos_off_diagonal;
       /// The direct path's factorisation of *direct_matrix (nullptr: none
       /// kept), and the control SolverDirect refers to.
       /// The direct path's Amesos solver, its analysis of a matrix and,
