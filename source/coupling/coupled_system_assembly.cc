@@ -623,7 +623,19 @@ namespace pdfem
       AssertThrow(s.model->symmetric(),
                   ExcMessage("the stability check needs a symmetric tangent"));
       if (s.matrix_free)
-        return s.matrix_free_stability();
+        {
+          // Type = auto: where CG finds the tangent indefinite or singular,
+          // the direct path takes over for good and its inertia decides.
+          const Drivers::StabilityReport report = s.matrix_free_stability();
+          if (!s.choice || (report.n_negative == 0 && !report.singular) ||
+              !s.choice->leave_matrix_free(
+                "CG found the tangent " +
+                std::string(report.singular ? "singular" : "indefinite") +
+                " at a stability check: the inertia of its factorisation "
+                "decides"))
+            return report;
+          s.switch_path(Solvers::SolvePath::direct);
+        }
       // The tangent at the last residual's state (that residual may have
       // only checked convergence and not assembled it).
       if (s.tangent_stale || !s.model->linear() ||

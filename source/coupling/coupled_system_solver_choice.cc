@@ -56,8 +56,10 @@ namespace pdfem
       // Type = auto resolves to cg for a model of forces only: nothing to
       // choose from (no matrix to factorise); write_solver_summary() gives
       // the reason.
-      if (choice || !ls.automatic || ls.conjugate_gradients())
+      if (choice || !ls.automatic || !layout.tangent)
         return;
+      // A nonlinear model on CG leaves it at the first negative curvature.
+      solver.stop_at_negative_curvature(ls.conjugate_gradients());
       // The assembled matrix's entries (FE cells and one row block per PD
       // family), and its LU factors at a fill of 10 (2D) or 25 (3D) times
       // that: measured 13 x on a mostly-PD 2D plate (15 k DoFs) and 22 x on
@@ -89,7 +91,8 @@ namespace pdfem
         ls.choice_reason,
         ls.choose_by_cost,
         fits,
-        note);
+        note,
+        ls.iterative() ? ls.type : "gmres");
     }
 
     template <int dim>
@@ -189,8 +192,8 @@ namespace pdfem
         }
       catch (const RunFailure &e)
         {
-          // A failed GMRES solve (the same on every rank) goes over to the
-          // direct path where that fits, instead of ending the run.
+          // A failed GMRES or CG solve (the same on every rank) goes over to
+          // the direct path where that fits, instead of ending the run.
           if (!s.matrix_free || e.exit_state != "linear solver diverged" ||
               !s.choice->matrix_free_failed(e.what()))
             throw;
@@ -252,7 +255,7 @@ namespace pdfem
       std::vector<std::string> lines;
       if (impl->choice)
         for (const auto &change : impl->choice->switches())
-          lines.push_back("linear solver: " + to_string(change.to) +
+          lines.push_back("linear solver: " + impl->choice->name(change.to) +
                           " from solve " + std::to_string(change.solve) +
                           " on: " + change.reason);
       return lines;

@@ -450,11 +450,10 @@ namespace pdfem
     if (plugins.model)
       s.setup.settings.pd_model = plugins.model;
     // Linear solver Type = auto made concrete for this model and driver.
-    s.setup.settings.linear_solver = s.setup.settings.linear_solver.resolve(
-      plugins.model && !plugins.model->linear(),
-      plugins.driver->needs_assembled_matrix(),
-      plugins.model && !plugins.model->layout().tangent,
-      plugins.model && plugins.model->layout().preconditioner);
+    s.setup.settings.linear_solver =
+      resolve_linear_solver(s.setup.settings.linear_solver,
+                            plugins.model.get(),
+                            *plugins.driver);
     s.model_name = plugins.model_name;
     s.driver     = std::move(plugins.driver);
     s.criterion  = std::move(plugins.criterion);

@@ -36,6 +36,27 @@ namespace pdfem
   }
 
   template <int dim>
+  Solvers::Settings
+  resolve_linear_solver(const Solvers::Settings        &linear_solver,
+                        const PDModels::Interface<dim> *model,
+                        const Drivers::Interface       &driver)
+  {
+    if (!model)
+      return linear_solver.resolve(false, driver.needs_assembled_matrix());
+    const PDModels::Layout &layout = model->layout();
+    // Products of a symmetric tangent serve every driver of nonlinear
+    // models: the relaxation's row bounds come from the tangent's rows.
+    const bool tangent_products = layout.tangent_products &&
+                                  model->symmetric() && layout.tangent &&
+                                  !layout.family_elements;
+    return linear_solver.resolve(!model->linear(),
+                                 driver.needs_assembled_matrix(),
+                                 !layout.tangent,
+                                 layout.preconditioner,
+                                 tangent_products);
+  }
+
+  template <int dim>
   void
   check_plugins(const Drivers::Interface       &driver,
                 const Fracture::Criterion<dim> *criterion,
@@ -187,34 +208,39 @@ namespace pdfem
     check_plugins<dim>(
       *plugins.driver,
       plugins.criterion.get(),
-      make_run_traits(
-        file,
-        dim,
-        plugins.model_name,
-        nonlinear_model,
-        density,
-        linear_solver.resolve(nonlinear_model,
-                              plugins.driver->needs_assembled_matrix()),
-        driver_settings.type,
-        plugins.model && plugins.model->layout().smooth_degradation,
-        plugins.model && plugins.model->layout().tangent &&
-          !plugins.model->layout().family_elements),
+      make_run_traits(file,
+                      dim,
+                      plugins.model_name,
+                      nonlinear_model,
+                      density,
+                      resolve_linear_solver(linear_solver,
+                                            plugins.model.get(),
+                                            *plugins.driver),
+                      driver_settings.type,
+                      plugins.model &&
+                        plugins.model->layout().smooth_degradation,
+                      plugins.model && plugins.model->layout().tangent &&
+                        !plugins.model->layout().family_elements),
       fracture);
     return plugins;
   }
 
-#define INSTANTIATE(dim)                                                        \
-  template RunPlugins<dim> make_plugins<dim>(const std::string &,               \
+#define INSTANTIATE(dim)                                                          \
+  template RunPlugins<dim>   make_plugins<dim>(const std::string &,               \
                                              const Drivers::Settings &,         \
                                              const Fracture::Settings &,        \
                                              const ModelChoice &,               \
                                              dealii::ParameterHandler *,        \
                                              double,                            \
                                              const Solvers::Settings &);        \
-  template void            check_plugins<dim>(const Drivers::Interface &,       \
+  template void              check_plugins<dim>(const Drivers::Interface &,       \
                                    const Fracture::Criterion<dim> *, \
                                    const Drivers::RunTraits &,       \
-                                   const Fracture::Settings &);
+                                   const Fracture::Settings &);      \
+  template Solvers::Settings resolve_linear_solver<dim>(                          \
+    const Solvers::Settings &,                                                    \
+    const PDModels::Interface<dim> *,                                             \
+    const Drivers::Interface &);
   PDFEM_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
 } // namespace pdfem

@@ -546,6 +546,9 @@ namespace pdfem
       x = 0.;
       lanczos_diagonal.clear();
       lanczos_off_diagonal.clear();
+      // Thrown out of CG's coefficient slot (stop_at_negative_curvature()).
+      struct NegativeCurvature
+      {};
       try
         {
           if (settings.conjugate_gradients())
@@ -558,6 +561,10 @@ namespace pdfem
                   lanczos_diagonal.push_back(1. / alpha + beta_over_alpha);
                   lanczos_off_diagonal.push_back(std::sqrt(beta) / alpha);
                   beta_over_alpha = beta / alpha;
+                  // alpha = r.z / p.Kp with r.z > 0: the same sign on
+                  // every rank.
+                  if (alpha < 0. && negative_curvature_stops)
+                    throw NegativeCurvature();
                 });
               cg.solve(OperatorWrapper{K}, x, b, P);
             }
@@ -567,6 +574,14 @@ namespace pdfem
               SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
                 settings.restart + 2, true))
               .solve(OperatorWrapper{K}, x, b, P);
+        }
+      catch (const NegativeCurvature &)
+        {
+          throw RunFailure("linear solver diverged",
+                           "CG met negative curvature (p.Kp < 0) in "
+                           "iteration " +
+                             std::to_string(lanczos_diagonal.size()) +
+                             ": the operator is indefinite");
         }
       catch (const SolverControl::NoConvergence &e)
         {

@@ -37,8 +37,12 @@ namespace pdfem
                         "matrix-free gmres ('amg fe') and a direct "
                         "factorisation kept across solves by what their "
                         "solves cost, and says why in summary.json "
-                        "(linear_solver.choice). A nonlinear PD model, "
-                        "Newmark and dynamic relaxation get 'direct'; a PD "
+                        "(linear_solver.choice). The nonlinear 'bond based' "
+                        "gets cg with 'amg fe' and goes over to 'direct' "
+                        "for good where CG meets negative curvature or the "
+                        "tangent is found indefinite; other nonlinear PD "
+                        "models, Newmark and dynamic relaxation get "
+                        "'direct'; a PD "
                         "model of forces only (lps fft) gets cg with 'amg "
                         "fe', whose products are force evaluations.");
       prm.declare_entry("Direct solver",
@@ -99,7 +103,8 @@ namespace pdfem
     Settings::resolve(const bool nonlinear_model,
                       const bool driver_needs_matrix,
                       const bool forces_only_model,
-                      const bool model_preconditioner) const
+                      const bool model_preconditioner,
+                      const bool tangent_products) const
     {
       if (type != "auto")
         return *this;
@@ -118,6 +123,17 @@ namespace pdfem
                                     "approximate inverse" :
                                     "preconditioned by AMG of the cells' "
                                     "Q1/P1 stiffness");
+        }
+      else if (nonlinear_model && tangent_products)
+        {
+          resolved.type           = "cg";
+          resolved.preconditioner = "amg fe";
+          resolved.choice_reason =
+            "the PD model is nonlinear and applies its symmetric tangent "
+            "without assembling it: matrix-free CG preconditioned by AMG of "
+            "the cells' Q1/P1 stiffness while the tangent is positive "
+            "definite, the assembled tangent factorised from where CG meets "
+            "negative curvature or finds it indefinite";
         }
       else if (nonlinear_model || driver_needs_matrix)
         {

@@ -23,22 +23,24 @@ namespace pdfem
     } // namespace
 
     std::string
-    to_string(const SolvePath path)
+    to_string(const SolvePath path, const std::string &krylov)
     {
-      return path == SolvePath::direct ? "direct" : "gmres (amg fe)";
+      return path == SolvePath::direct ? "direct" : krylov + " (amg fe)";
     }
 
     SolverChoice::SolverChoice(const SolvePath    start,
                                const std::string &why,
                                const bool         may_switch,
                                const bool         direct_fits,
-                               const std::string &memory_note)
+                               const std::string &memory_note,
+                               const std::string &krylov)
       : start_path(start)
       , current(start)
       , start_reason(why)
       , may_switch(may_switch)
       , direct_fits(direct_fits)
       , memory_note(memory_note)
+      , krylov(krylov)
     {}
 
     void
@@ -52,9 +54,9 @@ namespace pdfem
       changed = false;
       if (current == SolvePath::matrix_free)
         {
-          ++gmres_solves;
-          gmres_seconds += seconds;
-          gmres_iterations += iterations;
+          ++krylov_solves;
+          krylov_seconds += seconds;
+          krylov_iterations += iterations;
         }
       else if (factorized)
         {
@@ -77,7 +79,7 @@ namespace pdfem
       if (current == SolvePath::matrix_free)
         {
           // Many solves with one matrix: a kept factorisation may pay.
-          if (tried_direct || !direct_fits || gmres_solves < 3 ||
+          if (tried_direct || !direct_fits || krylov_solves < 3 ||
               3 * after_changes > solves)
             return false;
           tried_direct = true;
@@ -85,8 +87,8 @@ namespace pdfem
              std::to_string(solves - after_changes) + " of " +
                std::to_string(solves) +
                " solves reused an unchanged matrix and GMRES took " +
-               number(gmres_seconds / gmres_solves) + " s (" +
-               number(double(gmres_iterations) / gmres_solves) +
+               number(krylov_seconds / krylov_solves) + " s (" +
+               number(double(krylov_iterations) / krylov_solves) +
                " iterations) per solve: a factorisation kept across solves "
                "is tried");
           return true;
@@ -94,13 +96,13 @@ namespace pdfem
       // On the direct path after trying it: once both of its costs are
       // measured, keep it or go back for good.
       if (!tried_direct || factorizing_solves == 0 || plain_solves < 3 ||
-          gmres_solves == 0)
+          krylov_solves == 0)
         return false;
       settled                = true;
       const double factorize = factorizing_seconds / factorizing_solves;
       const double solve     = plain_seconds / plain_solves;
       const double direct    = solve + phi * std::max(factorize - solve, 0.);
-      const double gmres     = gmres_seconds / gmres_solves;
+      const double gmres     = krylov_seconds / krylov_solves;
       verdict = "a factorisation and solve took " + number(factorize) +
                 " s, a solve with it " + number(solve) + " s; with " +
                 number(100. * phi) +
@@ -116,10 +118,17 @@ namespace pdfem
     bool
     SolverChoice::matrix_free_failed(const std::string &message)
     {
+      return leave_matrix_free((krylov == "cg" ? "CG" : "GMRES") +
+                               std::string(" failed: ") + message);
+    }
+
+    bool
+    SolverChoice::leave_matrix_free(const std::string &reason)
+    {
       if (current != SolvePath::matrix_free || !direct_fits)
         return false;
       tried_direct = settled = true;
-      go(SolvePath::direct, "GMRES failed: " + message);
+      go(SolvePath::direct, reason);
       return true;
     }
 
@@ -134,17 +143,20 @@ namespace pdfem
     SolverChoice::write(IO::JsonWriter &json) const
     {
       json.begin_object("choice");
-      json.value("start", to_string(start_path));
+      json.value("start", name(start_path));
       json.value("reason", start_reason);
       json.value("direct_memory", memory_note);
       json.value("solves", solves);
       json.value("solves_after_matrix_change", after_changes);
-      json.value("gmres_solves", gmres_solves);
-      if (gmres_solves > 0)
+      // The matrix-free path's counts under its method's name: gmres_solves
+      // or cg_solves.
+      json.value(krylov + "_solves", krylov_solves);
+      if (krylov_solves > 0)
         {
-          json.value("gmres_seconds_per_solve", gmres_seconds / gmres_solves);
-          json.value("gmres_iterations_per_solve",
-                     double(gmres_iterations) / gmres_solves);
+          json.value(krylov + "_seconds_per_solve",
+                     krylov_seconds / krylov_solves);
+          json.value(krylov + "_iterations_per_solve",
+                     double(krylov_iterations) / krylov_solves);
         }
       json.value("direct_solves", factorizing_solves + plain_solves);
       if (factorizing_solves > 0)
@@ -159,7 +171,7 @@ namespace pdfem
         {
           json.begin_object(std::to_string(i + 1));
           json.value("solve", changes[i].solve);
-          json.value("to", to_string(changes[i].to));
+          json.value("to", name(changes[i].to));
           json.value("reason", changes[i].reason);
           json.end_object();
         }

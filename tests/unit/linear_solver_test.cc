@@ -295,6 +295,52 @@ namespace
       }
   }
 
+  TEST(LinearSolver, ConjugateGradientsStopAtNegativeCurvatureWhenAsked)
+  {
+    // (-1, d, -1): for d = 1 the smooth right-hand side lies mostly on
+    // eigenvalues near d - 2 < 0, so CG meets p.Kp < 0 at once; for d = 2.5
+    // (positive definite) it never does. Only with the flag does CG stop
+    // there (Type = auto with a nonlinear model, which then factorises).
+    const IndexSet owned = owned_rows(40);
+    for (const double d : {1., 2.5})
+      for (const bool stop : {false, true})
+        {
+          TrilinosWrappers::SparseMatrix A;
+          make_tridiagonal(A, owned, d);
+          pdfem::Solvers::Settings settings;
+          settings.type      = "cg";
+          settings.tolerance = 1e-12;
+          pdfem::Solvers::LinearSolver solver(settings);
+          solver.stop_at_negative_curvature(stop);
+          TrilinosWrappers::MPI::Vector b(owned, MPI_COMM_WORLD), x(b);
+          for (const auto i : owned)
+            b[i] = 1. + 0.1 * i;
+          b.compress(VectorOperation::insert);
+          const pdfem::Solvers::LinearSolver::Operator product =
+            [&A](TrilinosWrappers::MPI::Vector       &y,
+                 const TrilinosWrappers::MPI::Vector &v) { A.vmult(y, v); };
+          const pdfem::Solvers::LinearSolver::Operator identity =
+            [](TrilinosWrappers::MPI::Vector       &z,
+               const TrilinosWrappers::MPI::Vector &r) { z = r; };
+          std::string failure;
+          try
+            {
+              solver.solve(product, x, b, identity, 0.);
+            }
+          catch (const pdfem::RunFailure &e)
+            {
+              EXPECT_EQ(e.exit_state, "linear solver diverged");
+              failure = e.what();
+            }
+          const bool negative_curvature =
+            failure.find("negative curvature (p.Kp < 0) in iteration 1") !=
+            std::string::npos;
+          EXPECT_EQ(negative_curvature, stop && d < 2.) << d << " " << failure;
+          if (d > 2.)
+            EXPECT_TRUE(failure.empty()) << failure;
+        }
+  }
+
   TEST(LinearSolver, DirectOnASingularMatrixFailsWithOneLine)
   {
     for (const std::string package : {"mumps", "klu"})

@@ -134,6 +134,49 @@ namespace
     EXPECT_EQ(choice.path(), SolvePath::direct);
   }
 
+  TEST(SolverChoice, NonlinearCGNeverSwitchesByCostAndLeavesForGood)
+  {
+    // A nonlinear model on matrix-free CG: no choice by cost (every solve
+    // follows a new tangent), the direct path once CG finds the tangent
+    // indefinite, and no way back.
+    SolverChoice choice(
+      SolvePath::matrix_free, "nonlinear", false, true, "", "cg");
+    EXPECT_EQ(choice.name(SolvePath::matrix_free), "cg (amg fe)");
+    solves(choice, 10, false, 0.05, 60);
+    EXPECT_EQ(choice.path(), SolvePath::matrix_free);
+    ASSERT_TRUE(choice.matrix_free_failed("CG met negative curvature"));
+    EXPECT_EQ(choice.path(), SolvePath::direct);
+    EXPECT_EQ(choice.switches().back().reason,
+              "CG failed: CG met negative curvature");
+    EXPECT_EQ(choice.switches().back().solve, 11u);
+    EXPECT_FALSE(choice.leave_matrix_free("again"));
+    choice.record(0.3, 1, true);
+    solves(choice, 5, true, 0.001);
+    EXPECT_EQ(choice.path(), SolvePath::direct);
+    EXPECT_EQ(choice.switches().size(), 1u);
+    std::ostringstream out;
+    {
+      pdfem::IO::JsonWriter json(out);
+      json.begin_object();
+      choice.write(json);
+      json.end_object();
+    }
+    for (const char *part : {"\"start\": \"cg (amg fe)\"",
+                             "\"cg_solves\": 10",
+                             "\"cg_iterations_per_solve\": 60",
+                             "\"to\": \"direct\""})
+      EXPECT_NE(out.str().find(part), std::string::npos) << part;
+  }
+
+  TEST(SolverChoice, MatrixFreeIsLeftOnlyWhereDirectFits)
+  {
+    SolverChoice choice(
+      SolvePath::matrix_free, "nonlinear", false, false, "too much", "cg");
+    EXPECT_FALSE(choice.leave_matrix_free("CG found the tangent indefinite"));
+    EXPECT_EQ(choice.path(), SolvePath::matrix_free);
+    EXPECT_TRUE(choice.switches().empty());
+  }
+
   TEST(SolverChoice, ADirectStartWithoutAlternativeStays)
   {
     SolverChoice choice(SolvePath::direct, "nonlinear", false, true, "");

@@ -16,7 +16,8 @@
 #   environment: FACTOR (Mesh/Mesh size factor, default 1: dx = 2 cm; 0.5 is the paper's 1 cm),
 #                PAIRS (default 2), TOL (default 1e-8), SOLVER (direct, the scene's, or cg: every
 #                run with matrix-free CG preconditioned by 'amg fe'; the relaxation then bounds
-#                the tangent's rows without assembling it)
+#                the tangent's rows without assembling it; or auto: Linear solver/Type = auto,
+#                which takes that CG for the bond-based model)
 source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" "${1:-}" "${2:-}"
 scene="$root/applications/examples/bond_based_cantilever/cantilever_3d.prm"
 factor=${FACTOR:-1} pairs=${PAIRS:-2} tol=${TOL:-1e-8}
@@ -28,6 +29,8 @@ common=(--quiet --set "Mesh/Mesh size factor=$factor" --set "Driver/Residual tol
 solver=${SOLVER:-direct}
 if [ "$solver" = cg ]; then
   common+=(--set "Linear solver/Type=cg" --set "Linear solver/Preconditioner=amg fe")
+elif [ "$solver" = auto ]; then
+  common+=(--set "Linear solver/Type=auto")
 fi
 declare -A args
 args[adaptive]="Driver/Type=adaptive;Driver/Adaptive/Implicit steps=1;Driver/Adaptive/Explicit steps=1;Driver/Adaptive/Quiet steps=1;Driver/Adaptive/Damage tolerance=1e-3"

@@ -99,7 +99,7 @@ namespace pdfem
    * What the driver and criterion check of a run: @p model_name and
    * whether it is @p nonlinear, the @p density (a mass exists), the linear
    * solver (whether it assembles the coupled matrix), whether the model
-   * degrades smoothly.
+   * degrades smoothly and gives its tangent row by row.
    */
   Drivers::RunTraits
   make_run_traits(const std::string       &file,
@@ -109,7 +109,19 @@ namespace pdfem
                   double                   density,
                   const Solvers::Settings &linear_solver,
                   const std::string       &driver_name,
-                  bool                     smooth_degradation = false);
+                  bool                     smooth_degradation = false,
+                  bool                     tangent_rows       = false);
+
+  /**
+   * @p linear_solver with Type = auto made concrete for the PD model @p
+   * model (nullptr: the collocated pdlsm) and @p driver
+   * (Solvers::Settings::resolve()).
+   */
+  template <int dim>
+  Solvers::Settings
+  resolve_linear_solver(const Solvers::Settings        &linear_solver,
+                        const PDModels::Interface<dim> *model,
+                        const Drivers::Interface       &driver);
 
   /**
    * Check that @p driver, @p criterion (nullptr: none) and the rest of the

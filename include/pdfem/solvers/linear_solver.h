@@ -115,11 +115,28 @@ namespace pdfem
       matrix_rebuilt();
 
       /// Solve with a direct factorisation of the assembled matrix (@p
-      /// direct) or with GMRES (Type = auto changing its path).
+      /// direct) or with the Krylov method the solver had (GMRES if it had
+      /// none): Type = auto changing its path.
       void
       use_direct(const bool direct)
       {
-        settings.type = direct ? "direct" : "gmres";
+        if (settings.iterative())
+          krylov_type = settings.type;
+        settings.type = direct ? "direct" : krylov_type;
+      }
+
+      /**
+       * CG stops at the first negative curvature p^T K p < 0 (a negative
+       * step length alpha: the preconditioner is positive definite), with
+       * RunFailure "linear solver diverged", instead of going on with an
+       * operator proven indefinite. For Type = auto with a nonlinear model,
+       * which then goes over to the direct path; plain `cg` goes on (CG may
+       * still converge on an indefinite operator).
+       */
+      void
+      stop_at_negative_curvature(const bool stop)
+      {
+        negative_curvature_stops = stop;
       }
 
       /// The number of direct numeric factorisations so far.
@@ -232,8 +249,11 @@ namespace pdfem
                const dealii::TrilinosWrappers::MPI::Vector  &b,
                double                                        allowed_residual);
 
-      Solvers::Settings                                          settings;
-      std::vector<std::vector<bool>>                             constant_modes;
+      Solvers::Settings settings;
+      /// The Krylov method use_direct(false) returns to.
+      std::string                    krylov_type              = "gmres";
+      bool                           negative_curvature_stops = false;
+      std::vector<std::vector<bool>> constant_modes;
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
       const dealii::TrilinosWrappers::SparseMatrix *amg_matrix = nullptr;
       bool                                          amg_stale  = false;

@@ -58,22 +58,31 @@ namespace pdfem
       }
 
       /**
-       * Type = auto made concrete for a run: a nonlinear PD model, or a
-       * driver that works with the assembled matrix (Newmark, dynamic
-       * relaxation), gets the direct path; otherwise matrix-free GMRES
-       * ('amg fe'), with choose_by_cost set so that the system may go over
-       * to a direct factorisation where that is cheaper. A PD model of
-       * forces only (no tangent, PDModels::Layout::tangent false) gets
-       * matrix-free CG ('amg fe', which needs no PD tangent with CG, or the
-       * model's own 'pd model' where it has one) and no choice by cost:
-       * there is no matrix to factorise. Other types are returned as they
-       * are.
+       * Type = auto made concrete for a run:
+       * - a nonlinear PD model that applies its symmetric tangent to
+       *   vectors and bounds its rows without assembling it (@p
+       *   tangent_products: bond based) gets matrix-free CG ('amg fe'),
+       *   which goes over to the direct path for good where CG meets
+       *   negative curvature, fails, or finds the tangent indefinite at a
+       *   stability check (theory.md §13.7);
+       * - another nonlinear PD model, or a driver that works with the
+       *   assembled matrix (Newmark, dynamic relaxation), gets the direct
+       *   path;
+       * - a PD model of forces only (no tangent, PDModels::Layout::tangent
+       *   false) gets matrix-free CG ('amg fe', which needs no PD tangent
+       *   with CG, or the model's own 'pd model' where it has one) and no
+       *   choice by cost: there is no matrix to factorise;
+       * - otherwise matrix-free GMRES ('amg fe'), with choose_by_cost set so
+       *   that the system may go over to a direct factorisation where that
+       *   is cheaper.
+       * Other types are returned as they are.
        */
       Settings
       resolve(bool nonlinear_model,
               bool driver_needs_matrix,
               bool forces_only_model    = false,
-              bool model_preconditioner = false) const;
+              bool model_preconditioner = false,
+              bool tangent_products     = false) const;
 
       /// Preconditioner = pd model: the PD model's own approximate inverse
       /// (matrix-free; no auxiliary matrix).

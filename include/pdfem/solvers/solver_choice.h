@@ -25,9 +25,10 @@ namespace pdfem
       direct
     };
 
-    /// "gmres (amg fe)" or "direct".
+    /// "gmres (amg fe)" or "direct"; @p krylov names the matrix-free
+    /// path's method ("gmres" or "cg").
     std::string
-    to_string(SolvePath path);
+    to_string(SolvePath path, const std::string &krylov = "gmres");
 
     /**
      * `Linear solver/Type = auto` during a run: which path the next solve
@@ -56,6 +57,11 @@ namespace pdfem
      *   left again (for good) when it is 25 % dearer;
      * - a GMRES solve that fails goes over to the direct path, if that fits,
      *   instead of ending the run.
+     * A nonlinear model solved by matrix-free CG (@p may_switch false, @p
+     * krylov "cg") keeps CG while its tangent is positive definite and goes
+     * over to the direct path for good where a CG solve fails (negative
+     * curvature among them) or a stability check finds the tangent
+     * indefinite (leave_matrix_free()).
      * Every change of path and its reason is kept for summary.json and the
      * progress output. Times are the largest over the ranks, so that every
      * rank decides alike.
@@ -67,13 +73,22 @@ namespace pdfem
        * @p start: the first path, for the reason @p why. @p may_switch:
        * the other path is possible at all (the matrix-free path needs a
        * linear PD model). @p direct_fits: whether the direct factors fit in
-       * memory (and @p memory_note says why not, or the estimate).
+       * memory (and @p memory_note says why not, or the estimate). @p
+       * krylov: the matrix-free path's method, "gmres" or "cg".
        */
       SolverChoice(SolvePath          start,
                    const std::string &why,
                    bool               may_switch,
                    bool               direct_fits,
-                   const std::string &memory_note);
+                   const std::string &memory_note,
+                   const std::string &krylov = "gmres");
+
+      /// The name of @p path in this run ("cg (amg fe)", "direct").
+      std::string
+      name(SolvePath path) const
+      {
+        return to_string(path, krylov);
+      }
 
       /// The path of the next solve.
       SolvePath
@@ -107,6 +122,12 @@ namespace pdfem
       bool
       matrix_free_failed(const std::string &message);
 
+      /// The matrix-free path cannot go on for @p reason (a CG solve found
+      /// the tangent indefinite): go over to the direct path for good if it
+      /// fits (returns true), else false.
+      bool
+      leave_matrix_free(const std::string &reason);
+
       /// One change of path.
       struct Switch
       {
@@ -136,14 +157,15 @@ namespace pdfem
       bool          may_switch;
       bool          direct_fits;
       std::string   memory_note;
+      std::string   krylov;
       bool          changed            = true; // the first solve needs a matrix
       bool          tried_direct       = false;
       bool          settled            = false;
       unsigned long solves             = 0;
       unsigned long after_changes      = 0;
-      unsigned long gmres_solves       = 0;
-      double        gmres_seconds      = 0.;
-      unsigned long gmres_iterations   = 0;
+      unsigned long krylov_solves      = 0;
+      double        krylov_seconds     = 0.;
+      unsigned long krylov_iterations  = 0;
       unsigned long factorizing_solves = 0, plain_solves = 0;
       double        factorizing_seconds = 0., plain_seconds = 0.;
       /// The comparison that settled the choice, once made.
