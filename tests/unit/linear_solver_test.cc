@@ -337,7 +337,9 @@ namespace
             std::string::npos;
           EXPECT_EQ(negative_curvature, stop && d < 2.) << d << " " << failure;
           if (d > 2.)
-            EXPECT_TRUE(failure.empty()) << failure;
+            {
+              EXPECT_TRUE(failure.empty()) << failure;
+            }
         }
   }
 

@@ -47,6 +47,14 @@ namespace pdfem
       void
       set_constant_modes(const std::vector<std::vector<bool>> &modes);
 
+      /**
+       * The infinitesimal rotations (one vector over the locally owned DoFs
+       * each: 1 in 2D, 3 in 3D), added to the translations in the near null
+       * space of the 'amg fe' AMG; empty: translations only.
+       */
+      void
+      set_rotation_modes(const std::vector<std::vector<double>> &rotations);
+
       /// Solve with the assembled @p K: direct, or GMRES or CG with ML AMG
       /// or ILU of K. Returns the number of iterations (1 for direct). GMRES
       /// stops at |b - K x| <= max(tolerance |b|, @p allowed_residual).
@@ -251,9 +259,10 @@ namespace pdfem
 
       Solvers::Settings settings;
       /// The Krylov method use_direct(false) returns to.
-      std::string                    krylov_type              = "gmres";
-      bool                           negative_curvature_stops = false;
-      std::vector<std::vector<bool>> constant_modes;
+      std::string                      krylov_type              = "gmres";
+      bool                             negative_curvature_stops = false;
+      std::vector<std::vector<bool>>   constant_modes;
+      std::vector<std::vector<double>> rotation_modes;
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
       const dealii::TrilinosWrappers::SparseMatrix *amg_matrix = nullptr;
       bool                                          amg_stale  = false;
