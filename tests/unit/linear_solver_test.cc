@@ -245,6 +245,47 @@ namespace
       }
   }
 
+  /// CG (tolerance 1e-12, no preconditioner) on (-1, @p d, -1) with
+  /// b_i = 1 + 0.1 i through the operator interface; the failure's message,
+  /// or empty where CG converged.
+  std::string
+  solve_tridiagonal_with_cg(pdfem::Solvers::LinearSolver &solver,
+                            const IndexSet               &owned,
+                            const double                  d)
+  {
+    TrilinosWrappers::SparseMatrix A;
+    make_tridiagonal(A, owned, d);
+    TrilinosWrappers::MPI::Vector b(owned, MPI_COMM_WORLD), x(b);
+    for (const auto i : owned)
+      b[i] = 1. + 0.1 * i;
+    b.compress(VectorOperation::insert);
+    const pdfem::Solvers::LinearSolver::Operator product =
+      [&A](TrilinosWrappers::MPI::Vector       &y,
+           const TrilinosWrappers::MPI::Vector &v) { A.vmult(y, v); };
+    const pdfem::Solvers::LinearSolver::Operator identity =
+      [](TrilinosWrappers::MPI::Vector       &z,
+         const TrilinosWrappers::MPI::Vector &r) { z = r; };
+    try
+      {
+        solver.solve(product, x, b, identity, 0.);
+      }
+    catch (const pdfem::RunFailure &e)
+      {
+        EXPECT_EQ(e.exit_state, "linear solver diverged");
+        return e.what();
+      }
+    return "";
+  }
+
+  pdfem::Solvers::Settings
+  cg_settings()
+  {
+    pdfem::Solvers::Settings settings;
+    settings.type      = "cg";
+    settings.tolerance = 1e-12;
+    return settings;
+  }
+
   TEST(LinearSolver, ConjugateGradientsReportSignedRitzValues)
   {
     // (-1, d, -1) of size n has the eigenvalues d - 2 cos(k pi / (n + 1)),
@@ -256,31 +297,10 @@ namespace
                  highest      = 2. * std::cos(M_PI / (n + 1));
     for (const double d : {2.5, 1.95})
       {
-        TrilinosWrappers::SparseMatrix A;
-        make_tridiagonal(A, owned, d);
-        pdfem::Solvers::Settings settings;
-        settings.type      = "cg";
-        settings.tolerance = 1e-12;
-        pdfem::Solvers::LinearSolver solver(settings);
+        pdfem::Solvers::LinearSolver solver(cg_settings());
         EXPECT_FALSE(solver.last_ritz_values().known);
-        TrilinosWrappers::MPI::Vector b(owned, MPI_COMM_WORLD), x(b);
-        for (const auto i : owned)
-          b[i] = 1. + 0.1 * i;
-        b.compress(VectorOperation::insert);
-        const pdfem::Solvers::LinearSolver::Operator product =
-          [&A](TrilinosWrappers::MPI::Vector       &y,
-               const TrilinosWrappers::MPI::Vector &v) { A.vmult(y, v); };
-        const pdfem::Solvers::LinearSolver::Operator identity =
-          [](TrilinosWrappers::MPI::Vector       &z,
-             const TrilinosWrappers::MPI::Vector &r) { z = r; };
-        try
-          {
-            solver.solve(product, x, b, identity, 0.);
-          }
-        catch (const pdfem::RunFailure &)
-          {
-            // CG may fail on the indefinite matrix; its Ritz values stay.
-          }
+        // CG may fail on the indefinite matrix; its Ritz values stay.
+        solve_tridiagonal_with_cg(solver, owned, d);
         const auto ritz = solver.last_ritz_values();
         ASSERT_TRUE(ritz.known) << d;
         EXPECT_GE(ritz.smallest, d + lowest - 1e-9) << d;
@@ -305,33 +325,10 @@ namespace
     for (const double d : {1., 2.5})
       for (const bool stop : {false, true})
         {
-          TrilinosWrappers::SparseMatrix A;
-          make_tridiagonal(A, owned, d);
-          pdfem::Solvers::Settings settings;
-          settings.type      = "cg";
-          settings.tolerance = 1e-12;
-          pdfem::Solvers::LinearSolver solver(settings);
+          pdfem::Solvers::LinearSolver solver(cg_settings());
           solver.stop_at_negative_curvature(stop);
-          TrilinosWrappers::MPI::Vector b(owned, MPI_COMM_WORLD), x(b);
-          for (const auto i : owned)
-            b[i] = 1. + 0.1 * i;
-          b.compress(VectorOperation::insert);
-          const pdfem::Solvers::LinearSolver::Operator product =
-            [&A](TrilinosWrappers::MPI::Vector       &y,
-                 const TrilinosWrappers::MPI::Vector &v) { A.vmult(y, v); };
-          const pdfem::Solvers::LinearSolver::Operator identity =
-            [](TrilinosWrappers::MPI::Vector       &z,
-               const TrilinosWrappers::MPI::Vector &r) { z = r; };
-          std::string failure;
-          try
-            {
-              solver.solve(product, x, b, identity, 0.);
-            }
-          catch (const pdfem::RunFailure &e)
-            {
-              EXPECT_EQ(e.exit_state, "linear solver diverged");
-              failure = e.what();
-            }
+          const std::string failure =
+            solve_tridiagonal_with_cg(solver, owned, d);
           const bool negative_curvature =
             failure.find("negative curvature (p.Kp < 0) in iteration 1") !=
             std::string::npos;
