@@ -49,8 +49,10 @@ namespace pdfem
 
       /**
        * The infinitesimal rotations (one vector over the locally owned DoFs
-       * each: 1 in 2D, 3 in 3D), added to the translations in the near null
-       * space of the 'amg fe' AMG; empty: translations only.
+       * each), added to the translations in the near null space of the
+       * 'amg fe' AMG, whose aggregation threshold is then 0; empty:
+       * translations only, threshold 0.02. CoupledSystem gives them in 3D
+       * (measured in linear_solver.cc, initialize_amg()).
        */
       void
       set_rotation_modes(const std::vector<std::vector<double>> &rotations);
