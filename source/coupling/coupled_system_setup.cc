@@ -4,6 +4,7 @@
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/mpi.h>
 
 #include <deal.II/hp/fe_values.h>
@@ -239,53 +240,39 @@ namespace pdfem
         }
       x_masked.reinit(owned, comm);
 
-      // Constant (translation) modes over the owned DoFs, for AMG.
-      std::vector<std::vector<bool>> modes(dim,
+      // AMG's near null space over the owned DoFs: the translations
+      // (constant modes) and, in 3D, the rotations e_a x r about the centre
+      // of the nodes' box, r in units of its diagonal so that they are of
+      // the translations' size (LinearSolver::set_rotation_modes()).
+      std::vector<std::vector<bool>>   modes(dim,
                                            std::vector<bool>(owned.n_elements(),
                                                              false));
+      std::vector<std::vector<double>> rotations(
+        dim == 3 ? dim : 0, std::vector<double>(owned.n_elements(), 0.));
+      const BoundingBox<dim> box(x);
+      const Point<dim>       centre = box.center();
+      const double extent = std::max(box.get_boundary_points().first.distance(
+                                       box.get_boundary_points().second),
+                                     1e-300);
       for (unsigned int i = 0; i < owned.n_elements(); ++i)
         {
-          const auto dof = owned.nth_index_in_set(i);
-          const auto k   = dof_to_node[dof];
-          for (unsigned int c = 0; c < dim; ++c)
-            if (node_dof[k][c] == dof)
-              modes[c][i] = true;
+          const auto         dof = owned.nth_index_in_set(i);
+          const auto         k   = dof_to_node[dof];
+          const unsigned int c   = static_cast<unsigned int>(
+            std::find(node_dof[k].begin(), node_dof[k].end(), dof) -
+            node_dof[k].begin());
+          modes[c][i]            = true;
+          const Tensor<1, dim> r = (x[k] - centre) / extent;
+          // About axis a: the components a+1 and a+2 of e_a x r are
+          // -r_(a+2) and r_(a+1).
+          for (unsigned int a = 0; a < rotations.size(); ++a)
+            if (c == (a + 1) % 3)
+              rotations[a][i] = -r[(a + 2) % 3];
+            else if (c == (a + 2) % 3)
+              rotations[a][i] = r[(a + 1) % 3];
         }
       solver.set_constant_modes(modes);
-      // 3D: the rotations too (LinearSolver::set_rotation_modes()).
-      if constexpr (dim == 3)
-        {
-          // About the centre of the nodes' box, in units of its diagonal,
-          // so that they are of the translations' size.
-          Point<dim> lo = x[0], hi = x[0];
-          for (const auto &p : x)
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                lo[d] = std::min(lo[d], p[d]);
-                hi[d] = std::max(hi[d], p[d]);
-              }
-          const Point<dim> centre = 0.5 * (lo + hi);
-          const double     extent = std::max(lo.distance(hi), 1e-300);
-          std::vector<std::vector<double>> rotations(
-            dim, std::vector<double>(owned.n_elements(), 0.));
-          for (unsigned int i = 0; i < owned.n_elements(); ++i)
-            {
-              const auto         dof = owned.nth_index_in_set(i);
-              const auto         k   = dof_to_node[dof];
-              const unsigned int c   = static_cast<unsigned int>(
-                std::find(node_dof[k].begin(), node_dof[k].end(), dof) -
-                node_dof[k].begin());
-              const Tensor<1, dim> r = (x[k] - centre) / extent;
-              // About axis a: e_a x r, whose components a+1 and a+2 are
-              // -r_(a+2) and r_(a+1).
-              for (unsigned int a = 0; a < dim; ++a)
-                if (c == (a + 1) % 3)
-                  rotations[a][i] = -r[(a + 2) % 3];
-                else if (c == (a + 2) % 3)
-                  rotations[a][i] = r[(a + 1) % 3];
-            }
-          solver.set_rotation_modes(rotations);
-        }
+      solver.set_rotation_modes(rotations);
       set_up_choice();
     }
 

@@ -4,6 +4,7 @@
 // continuation under hard loading) and the patch test of the coupling.
 #include <pdfem/base/config.h>
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
@@ -166,14 +167,7 @@ namespace pdfem
         for (unsigned int c = 0; c < dim; ++c)
           patch_fixed[s.node_dof[k][c]] = 1;
 
-      Point<dim> lo = s.x[0], hi = s.x[0];
-      for (const auto &p : s.x)
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            lo[d] = std::min(lo[d], p[d]);
-            hi[d] = std::max(hi[d], p[d]);
-          }
-      const Point<dim> centre = 0.5 * (lo + hi);
+      const Point<dim> centre = BoundingBox<dim>(s.x).center();
 
       // The tangent at u = 0 with the patch's constraints.
       std::swap(s.dof_fixed, patch_fixed);

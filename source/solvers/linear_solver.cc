@@ -456,15 +456,12 @@ namespace pdfem
           if (i + 1 < n)
             T(i, i + 1) = lanczos_off_diagonal[i];
         }
-      T.compute_eigenvalues();
+      T.compute_eigenvalues(); // in ascending order (LAPACK's stev)
       ritz.known    = true;
-      ritz.smallest = ritz.largest = T.eigenvalue(0);
-      for (std::size_t i = 0; i < n; ++i)
-        {
-          ritz.smallest = std::min(ritz.smallest, T.eigenvalue(i));
-          ritz.largest  = std::max(ritz.largest, T.eigenvalue(i));
-          ritz.n_negative += T.eigenvalue(i) < 0.;
-        }
+      ritz.smallest = T.eigenvalue(0);
+      ritz.largest  = T.eigenvalue(n - 1);
+      for (std::size_t i = 0; i < n && T.eigenvalue(i) < 0.; ++i)
+        ++ritz.n_negative;
       return ritz;
     }
 
