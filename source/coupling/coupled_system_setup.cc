@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 #include "coupled_system_impl.h"
 
@@ -283,18 +284,73 @@ namespace pdfem
       const bool                         all_cells) const
     {
       // Cell patterns: FE cells only (f_int, tangent), or every cell ("amg
-      // fe"); every owned row has its diagonal (held DoFs).
-      std::vector<types::global_dof_index> local;
+      // fe"); every owned row has its diagonal (held DoFs). Node by node:
+      // the rows of a node hold the DoFs of every node it shares a cell
+      // with, inserted once, complete and sorted, instead of cell by cell
+      // (each row then merged 8 times in 3D): the two patterns of the
+      // peer's box (boxVpd4_static.in, 32 000 hexahedra) took 0.43 s, now
+      // 0.25 s. The
+      // mesh is on every rank, so a row gets all its cells; the rows of
+      // nodes of the owned cells that other ranks own go with them, as
+      // before.
+      std::vector<unsigned int> cell_offsets{0}, cell_nodes;
+      std::vector<std::uint8_t> touched(n_nodes, 0);
       for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned() &&
-            (all_cells || !cell_pd[cell->active_cell_index()]))
+        if (all_cells || !cell_pd[cell->active_cell_index()])
           {
-            local.resize(cell->get_fe().n_dofs_per_cell());
-            cell->get_dof_indices(local);
-            std::sort(local.begin(), local.end());
-            for (const auto row : local)
-              sp.add_entries(row, local.begin(), local.end(), true);
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                const unsigned int k = vertex_to_node[cell->vertex_index(v)];
+                cell_nodes.push_back(k);
+                touched[k] |= cell->is_locally_owned();
+              }
+            cell_offsets.push_back(cell_nodes.size());
           }
+      // The cells of each node, as compressed rows.
+      std::vector<unsigned int> node_offsets(n_nodes + 1, 0), node_cells;
+      for (const unsigned int k : cell_nodes)
+        ++node_offsets[k + 1];
+      std::partial_sum(node_offsets.begin(),
+                       node_offsets.end(),
+                       node_offsets.begin());
+      node_cells.resize(cell_nodes.size());
+      {
+        std::vector<unsigned int> next(node_offsets.begin(),
+                                       node_offsets.end() - 1);
+        for (unsigned int c = 0; c + 1 < cell_offsets.size(); ++c)
+          for (unsigned int i = cell_offsets[c]; i < cell_offsets[c + 1]; ++i)
+            node_cells[next[cell_nodes[i]]++] = c;
+      }
+
+      std::vector<unsigned int>            neighbours;
+      std::vector<types::global_dof_index> columns;
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        {
+          const bool owned_node = owned.is_element(node_dof[k][0]);
+          if (!(touched[k] || owned_node) ||
+              node_offsets[k] == node_offsets[k + 1])
+            continue;
+          neighbours.clear();
+          for (unsigned int i = node_offsets[k]; i < node_offsets[k + 1]; ++i)
+            {
+              const unsigned int c = node_cells[i];
+              neighbours.insert(neighbours.end(),
+                                cell_nodes.begin() + cell_offsets[c],
+                                cell_nodes.begin() + cell_offsets[c + 1]);
+            }
+          std::sort(neighbours.begin(), neighbours.end());
+          neighbours.erase(std::unique(neighbours.begin(), neighbours.end()),
+                           neighbours.end());
+          columns.clear();
+          for (const unsigned int m : neighbours)
+            columns.insert(columns.end(),
+                           node_dof[m].begin(),
+                           node_dof[m].end());
+          std::sort(columns.begin(), columns.end());
+          for (const auto row : node_dof[k])
+            if (touched[k] || owned.is_element(row))
+              sp.add_entries(row, columns.begin(), columns.end(), true);
+        }
       for (const auto i : owned)
         sp.add(i, i);
     }

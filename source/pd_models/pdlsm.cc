@@ -73,6 +73,27 @@ namespace pdfem
           return false;
         std::vector<double>   v(m * n, 0.); // Householder vectors
         std::array<double, n> beta{};
+        // Columns first..n-1 of A -= factor w (w^T A) over rows
+        // first_row..m-1, for the Householder vector w: the sums of all
+        // columns in one pass over the rows, each still summed in row
+        // order, so the result is the same bit for bit as column by column.
+        // With the skipped zero columns of Q below: compute_weights() 0.76
+        // -> 0.57 CPU s on the peer's 3D box (14 637 families of 228 bonds,
+        // perf samples).
+        const auto reflect = [&](const double     *w,
+                                 const double      factor,
+                                 const std::size_t first_row,
+                                 const std::size_t first) {
+          std::array<double, n> dot{};
+          for (std::size_t i = first_row; i < m; ++i)
+            for (std::size_t j = first; j < n; ++j)
+              dot[j] += w[i] * a(i, j);
+          for (std::size_t j = first; j < n; ++j)
+            dot[j] *= factor;
+          for (std::size_t i = first_row; i < m; ++i)
+            for (std::size_t j = first; j < n; ++j)
+              a(i, j) -= dot[j] * w[i];
+        };
         for (std::size_t k = 0; k < n; ++k)
           {
             double norm = 0.;
@@ -89,15 +110,7 @@ namespace pdfem
                 vnorm2 += v[k * m + i] * v[k * m + i];
               }
             beta[k] = vnorm2 > 0. ? 2. / vnorm2 : 0.;
-            for (std::size_t j = k; j < n; ++j)
-              {
-                double dot = 0.;
-                for (std::size_t i = k; i < m; ++i)
-                  dot += v[k * m + i] * a(i, j);
-                dot *= beta[k];
-                for (std::size_t i = k; i < m; ++i)
-                  a(i, j) -= dot * v[k * m + i];
-              }
+            reflect(&v[k * m], beta[k], k, k);
           }
         for (std::size_t i = 0; i < n; ++i)
           for (std::size_t j = 0; j < n; ++j)
@@ -106,16 +119,9 @@ namespace pdfem
         std::fill(A.begin(), A.end(), 0.);
         for (std::size_t j = 0; j < n; ++j)
           a(j, j) = 1.;
+        // Columns j < k are still e_j there, zero in H_k's rows.
         for (std::size_t k = n; k-- > 0;)
-          for (std::size_t j = 0; j < n; ++j)
-            {
-              double dot = 0.;
-              for (std::size_t i = k; i < m; ++i)
-                dot += v[k * m + i] * a(i, j);
-              dot *= beta[k];
-              for (std::size_t i = k; i < m; ++i)
-                a(i, j) -= dot * v[k * m + i];
-            }
+          reflect(&v[k * m], beta[k], k, k);
         return true;
       }
     } // namespace
@@ -265,20 +271,30 @@ namespace pdfem
       if (!thin_qr<n>(A, n_bonds, R, 1e-12))
         return false;
 
+      // R^-1 q_m by back substitution, every bond at once (the bonds in
+      // the inner loop: each bond's operations in the same order as one by
+      // one, without waiting for each division in turn): 0.57 -> 0.49 CPU s
+      // on the 3D box.
+      for (std::size_t i = n; i-- > 0;)
+        {
+          double *c_i = &A[i * n_bonds];
+          for (std::size_t k = i + 1; k < n; ++k)
+            {
+              const double  r_ik = R[i][k];
+              const double *c_k  = &A[k * n_bonds];
+              for (std::size_t m = 0; m < n_bonds; ++m)
+                c_i[m] -= r_ik * c_k[m];
+            }
+          const double r_ii = R[i][i];
+          for (std::size_t m = 0; m < n_bonds; ++m)
+            c_i[m] /= r_ii;
+        }
       const double inv_delta2 = inv_delta * inv_delta;
       for (std::size_t m = 0; m < n_bonds; ++m)
         {
           std::array<double, n> c;
           for (std::size_t j = 0; j < n; ++j)
-            c[j] = A[j * n_bonds + m];
-          for (std::size_t i = n; i-- > 0;)
-            {
-              for (std::size_t k = i + 1; k < n; ++k)
-                c[i] -= R[i][k] * c[k];
-              c[i] /= R[i][i];
-            }
-          for (std::size_t j = 0; j < n; ++j)
-            c[j] *= sqrt_w[m];
+            c[j] = A[j * n_bonds + m] * sqrt_w[m];
           for (unsigned int i = 0; i < dim; ++i)
             {
               a[m][i]    = c[i] * inv_delta;
