@@ -289,10 +289,9 @@ namespace pdfem
       // with, inserted once, complete and sorted, instead of cell by cell
       // (each row then merged 8 times in 3D): the two patterns of the
       // peer's box (boxVpd4_static.in, 32 000 hexahedra) took 0.43 s, now
-      // 0.25 s. The
-      // mesh is on every rank, so a row gets all its cells; the rows of
-      // nodes of the owned cells that other ranks own go with them, as
-      // before.
+      // 0.25 s. The mesh is on every rank, so a row gets all its cells; the
+      // rows of the owned cells' nodes that other ranks own go to them, as
+      // before (a node's DoFs have one owner).
       std::vector<unsigned int> cell_offsets{0}, cell_nodes;
       std::vector<std::uint8_t> touched(n_nodes, 0);
       for (const auto &cell : dofs.active_cell_iterators())
@@ -326,8 +325,7 @@ namespace pdfem
       std::vector<types::global_dof_index> columns;
       for (unsigned int k = 0; k < n_nodes; ++k)
         {
-          const bool owned_node = owned.is_element(node_dof[k][0]);
-          if (!(touched[k] || owned_node) ||
+          if (!(touched[k] || owned.is_element(node_dof[k][0])) ||
               node_offsets[k] == node_offsets[k + 1])
             continue;
           neighbours.clear();
@@ -348,8 +346,7 @@ namespace pdfem
                            node_dof[m].end());
           std::sort(columns.begin(), columns.end());
           for (const auto row : node_dof[k])
-            if (touched[k] || owned.is_element(row))
-              sp.add_entries(row, columns.begin(), columns.end(), true);
+            sp.add_entries(row, columns.begin(), columns.end(), true);
         }
       for (const auto i : owned)
         sp.add(i, i);
