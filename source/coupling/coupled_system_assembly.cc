@@ -548,8 +548,9 @@ namespace pdfem
       std::vector<global_dof_index> cols;
       std::vector<double>           values;
       for_each_free_fe_row(cols, values, [&](const global_dof_index row) {
+        double &sum = b[owned.index_within_set(row)];
         for (const double v : values)
-          b[owned.index_within_set(row)] += std::abs(v);
+          sum += std::abs(v);
       });
       const PDModels::NodalField<dim> field = tangent_field();
       for_each_tangent_row(field, [&](const std::size_t o, const auto &blocks) {
