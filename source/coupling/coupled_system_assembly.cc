@@ -10,6 +10,7 @@
 #include <deal.II/fe/fe_values_extractors.h>
 #include <deal.II/hp/fe_values.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "coupled_system_impl.h"
@@ -133,11 +134,28 @@ namespace pdfem
             return families.intact[i] == 0;
         return false;
       };
+      // Only a family that lost a bond can part a cell's vertices: cells
+      // whose vertices own no such family are whole without the pair tests
+      // (on the peer's box, no bond broken: 0.03 s per call before).
+      std::vector<std::uint8_t> lost_bond(families.owners.size() + 1, 0);
+      for (std::size_t o = 0; o < families.owners.size(); ++o)
+        lost_bond[o] =
+          std::find(families.intact.begin() + families.offsets[o],
+                    families.intact.begin() + families.offsets[o + 1],
+                    std::uint8_t(0)) !=
+          families.intact.begin() + families.offsets[o + 1];
       std::vector<bool> cut(tria.n_active_cells(), false);
       std::array<unsigned int, GeometryInfo<dim>::vertices_per_cell> group;
       for (const auto &cell : tria.active_cell_iterators())
         if (cell->is_locally_owned() && cell_pd[cell->active_cell_index()])
           {
+            bool may_be_cut = false;
+            for (const unsigned int v : cell->vertex_indices())
+              may_be_cut =
+                may_be_cut ||
+                lost_bond[family_of[vertex_to_node[cell->vertex_index(v)]]];
+            if (!may_be_cut)
+              continue;
             // Group the vertices joined by intact bonds; the cell is cut
             // when they fall apart into two or more groups. A single broken
             // bond (diffuse damage) leaves the vertices joined.

@@ -127,28 +127,10 @@ namespace pdfem
       for (std::size_t o = 0; o < families.owners.size(); ++o)
         family_of[families.owners[o]] = o;
 
-      // The model's per-bond data over the whole initial families.
-      region.comm                 = comm;
-      region.position             = &x;
-      region.volume               = &volume;
-      region.pd_volume            = &pd_volume;
-      region.horizon              = &horizon;
-      region.spacing              = spacing;
-      region.fe_nodes_in_families = settings.fe_nodes_in_families;
-      region.has_fe_cells         = &is_fe;
-      region.boundary_area        = &boundary_area;
-      region.families             = &families;
-      region.lambda               = settings.material.lambda();
-      region.mu                   = settings.material.mu();
-      region.youngs_modulus       = settings.material.youngs_modulus;
-      region.poissons_ratio       = settings.material.poissons_ratio;
-      region.plane_strain         = dim == 2 && !settings.material.plane_stress;
-      region.source_file          = settings.source_file;
-      model->initialize(region);
-
       // Bonds crossing a pre-existing crack are cut for good; a crack that
       // cuts none lies outside every PD region and would not be there.
-      std::vector<std::size_t>   cut_families;
+      families_cut_at_start.clear();
+      bonds_cut_at_start.clear();
       const auto                &cracks = settings.cracks;
       std::vector<unsigned long> cut_by(cracks.size(), 0);
       for (std::size_t o = 0; o < families.owners.size() && !cracks.empty();
@@ -160,12 +142,14 @@ namespace pdfem
             for (std::size_t c = 0; c < cracks.size(); ++c)
               if (cracks[c].cuts(x[families.owners[o]], x[families.members[b]]))
                 {
+                  if (families.intact[b] != 0)
+                    bonds_cut_at_start.push_back(b);
                   families.intact[b] = 0;
                   cut                = true;
                   ++cut_by[c];
                 }
           if (cut)
-            cut_families.push_back(o);
+            families_cut_at_start.push_back(o);
         }
       Utilities::MPI::sum(cut_by, comm, cut_by);
       // Without PD cells a crack is a slit of the FE mesh, given for the
@@ -187,11 +171,6 @@ namespace pdfem
                              "cracks through PD cells (Mesh/PD regions), or "
                              "Fracture/Adaptive margin > 0");
           }
-      // The crack faces' area first: a model may read s_k when its bonds
-      // change (pdlsm energy's integration constraint).
-      if (settings.free_crack_faces && !settings.cracks.empty())
-        add_crack_face_area(settings.cracks);
-      model->reference_bonds_cut(cut_families, settings.free_crack_faces);
       update_decoupled();
 
       // Ghosts: every DoF of a family member or of a vertex of an owned
@@ -229,6 +208,42 @@ namespace pdfem
             owned_lid[k][c] =
               owned.is_element(dof) ? owned.index_within_set(dof) : invalid;
           }
+    }
+
+    template <int dim>
+    void
+    CoupledSystem<dim>::Impl::initialize_model()
+    {
+      // The model's per-bond data over the whole initial families.
+      region.comm                 = comm;
+      region.position             = &x;
+      region.volume               = &volume;
+      region.pd_volume            = &pd_volume;
+      region.horizon              = &horizon;
+      region.spacing              = spacing;
+      region.fe_nodes_in_families = settings.fe_nodes_in_families;
+      region.has_fe_cells         = &is_fe;
+      region.boundary_area        = &boundary_area;
+      region.families             = &families;
+      region.lambda               = settings.material.lambda();
+      region.mu                   = settings.material.mu();
+      region.youngs_modulus       = settings.material.youngs_modulus;
+      region.poissons_ratio       = settings.material.poissons_ratio;
+      region.plane_strain         = dim == 2 && !settings.material.plane_stress;
+      region.source_file          = settings.source_file;
+      // The model sees its whole initial families, no bond cut yet.
+      for (const std::size_t b : bonds_cut_at_start)
+        families.intact[b] = 1;
+      model->initialize(region);
+      for (const std::size_t b : bonds_cut_at_start)
+        families.intact[b] = 0;
+
+      // The crack faces' area first: a model may read s_k when its bonds
+      // change (pdlsm energy's integration constraint).
+      if (settings.free_crack_faces && !settings.cracks.empty())
+        add_crack_face_area(settings.cracks);
+      model->reference_bonds_cut(families_cut_at_start,
+                                 settings.free_crack_faces);
     }
 
     template <int dim>
@@ -334,6 +349,7 @@ namespace pdfem
       &,                                                                     \
     std::vector<Tensor<1, dim>> &) const;                                    \
   template void CoupledSystem<dim>::Impl::make_families();                   \
+  template void CoupledSystem<dim>::Impl::initialize_model();                \
   template void CoupledSystem<dim>::Impl::add_crack_face_area(               \
     const std::vector<Mesh::Crack<dim>> &);                                  \
   template void CoupledSystem<dim>::Impl::update_decoupled();

@@ -77,8 +77,14 @@ namespace pdfem
           bool(const typename dealii::DoFHandler<dim>::active_cell_iterator &,
                unsigned int)>               &selected,
         std::vector<dealii::Tensor<1, dim>> &area) const;
+      /// The families of the owned PD nodes, cut by the pre-existing
+      /// cracks; the model's per-bond data come later (initialize_model()).
       void
       make_families();
+      /// The PD model's per-bond data over its whole initial families, then
+      /// the bonds cut by the pre-existing cracks.
+      void
+      initialize_model();
       void
       make_sparsity();
       /// Add the entries of the locally owned FE cells (@p all_cells: every
@@ -86,6 +92,10 @@ namespace pdfem
       void
       add_cell_entries(dealii::TrilinosWrappers::SparsityPattern &sp,
                        bool all_cells) const;
+      /// With Settings::prepare_solver and the matrix-free path: the AMG of
+      /// the auxiliary matrix now (before initialize_model()).
+      void
+      prepare_solver();
       /// The pattern of the "amg fe" auxiliary matrix (every cell).
       void
       make_auxiliary_pattern();
@@ -468,6 +478,9 @@ namespace pdfem
       /// if it owns no family here.
       std::vector<std::size_t>  family_of;
       std::vector<std::uint8_t> decoupled; // per family owner (see above)
+      /// The families and the bonds the pre-existing cracks cut
+      /// (make_families(), for initialize_model()).
+      std::vector<std::size_t> families_cut_at_start, bonds_cut_at_start;
       /// Per family owner: held as part of a fragment (hold_fragments()).
       std::vector<std::uint8_t> fragment;
       /// What broke bonds or held nodes since construction, in order:

@@ -556,11 +556,13 @@ namespace pdfem
       impl->make_boundary_conditions();
       impl->make_pd_boundary();
       impl->make_families();
-      impl->make_traction_layers();
-      impl->make_pd_chunks();
       impl->make_sparsity();
       impl->update_held();
       impl->assemble_fe_matrix();
+      impl->prepare_solver();
+      impl->initialize_model();
+      impl->make_traction_layers();
+      impl->make_pd_chunks();
     }
 
     template <int dim>

@@ -97,6 +97,16 @@ namespace pdfem
 
     template <int dim>
     void
+    CoupledSystem<dim>::Impl::prepare_solver()
+    {
+      if (!settings.prepare_solver || !matrix_free ||
+          settings.linear_solver.model_preconditioner())
+        return;
+      solver.prepare_preconditioner(auxiliary);
+    }
+
+    template <int dim>
+    void
     CoupledSystem<dim>::Impl::switch_path(const Solvers::SolvePath path)
     {
       const bool direct = path == Solvers::SolvePath::direct;
@@ -263,6 +273,7 @@ namespace pdfem
 
 #define INSTANTIATE(dim)                                                   \
   template void CoupledSystem<dim>::Impl::set_up_choice();                 \
+  template void CoupledSystem<dim>::Impl::prepare_solver();                \
   template void CoupledSystem<dim>::Impl::switch_path(Solvers::SolvePath); \
   template unsigned int CoupledSystem<dim>::Impl::solve_on_path(           \
     Vector &, const Vector &, double);                                     \

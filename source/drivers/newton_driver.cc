@@ -676,6 +676,12 @@ namespace pdfem
           return true;
         }
 
+        bool
+        solves_linear_systems() const override
+        {
+          return true;
+        }
+
         void
         check(const RunTraits &traits) const override
         {

@@ -94,6 +94,12 @@ namespace pdfem
         }
 
         bool
+        solves_linear_systems() const override
+        {
+          return true;
+        }
+
+        bool
         grows_cracks() const override
         {
           return true;

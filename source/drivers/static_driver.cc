@@ -150,6 +150,12 @@ namespace pdfem
         }
 
         bool
+        solves_linear_systems() const override
+        {
+          return true;
+        }
+
+        bool
         solves_with_products() const override
         {
           return true; // equilibrate() uses the tangent in its solves only

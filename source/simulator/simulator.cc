@@ -454,9 +454,10 @@ namespace pdfem
       resolve_linear_solver(s.setup.settings.linear_solver,
                             plugins.model.get(),
                             *plugins.driver);
-    s.model_name = plugins.model_name;
-    s.driver     = std::move(plugins.driver);
-    s.criterion  = std::move(plugins.criterion);
+    s.setup.settings.prepare_solver = plugins.driver->solves_linear_systems();
+    s.model_name                    = plugins.model_name;
+    s.driver                        = std::move(plugins.driver);
+    s.criterion                     = std::move(plugins.criterion);
     // The driver's validated parameters (time step, monitor points parsed)
     // are the run's.
     s.setup.driver = s.driver->settings();

@@ -425,6 +425,7 @@ namespace pdfem
       amg_stale            = false;
       amg_fresh_iterations = 0;
       last_iterations      = 0;
+      fresh_auxiliary_amg  = false;
     }
 
     void
@@ -646,13 +647,9 @@ namespace pdfem
       return last_iterations;
     }
 
-    unsigned int
-    LinearSolver::solve(const Operator                       &K,
-                        TrilinosWrappers::MPI::Vector        &x,
-                        const TrilinosWrappers::MPI::Vector  &b,
-                        const TrilinosWrappers::SparseMatrix &auxiliary,
-                        const Operator                       &block_jacobi,
-                        const double                          allowed_residual)
+    bool
+    LinearSolver::prepare_auxiliary_amg(
+      const TrilinosWrappers::SparseMatrix &auxiliary)
     {
       // The auxiliary FE stiffness is symmetric positive definite.
       // The auxiliary matrix changes in place when cracks cut cells. ML's
@@ -661,20 +658,44 @@ namespace pdfem
       // 10 % more iterations than right after the last build. On the
       // plateCrack FC1 input: 10 builds instead of 34, 1 109 iterations
       // instead of 1 069 (25 %: 7 builds, 1 152; 50 %: 4, 1 259).
-      const bool rebuild =
-        !amg || amg_matrix != &auxiliary ||
-        (amg_stale && 10 * last_iterations > 11 * amg_fresh_iterations);
-      if (rebuild)
-        {
-          amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-          initialize_amg(*amg,
-                         auxiliary,
-                         constant_modes,
-                         rotation_modes,
-                         settings.conjugate_gradients());
-          amg_matrix = &auxiliary;
-          amg_stale  = false;
-        }
+      if (has_preconditioner_for(auxiliary))
+        return fresh_auxiliary_amg;
+      amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+      initialize_amg(*amg,
+                     auxiliary,
+                     constant_modes,
+                     rotation_modes,
+                     settings.conjugate_gradients());
+      amg_matrix          = &auxiliary;
+      amg_stale           = false;
+      fresh_auxiliary_amg = true;
+      return true;
+    }
+
+    bool
+    LinearSolver::has_preconditioner_for(
+      const TrilinosWrappers::SparseMatrix &auxiliary) const
+    {
+      return amg && amg_matrix == &auxiliary &&
+             !(amg_stale && 10 * last_iterations > 11 * amg_fresh_iterations);
+    }
+
+    void
+    LinearSolver::prepare_preconditioner(
+      const TrilinosWrappers::SparseMatrix &auxiliary)
+    {
+      prepare_auxiliary_amg(auxiliary);
+    }
+
+    unsigned int
+    LinearSolver::solve(const Operator                       &K,
+                        TrilinosWrappers::MPI::Vector        &x,
+                        const TrilinosWrappers::MPI::Vector  &b,
+                        const TrilinosWrappers::SparseMatrix &auxiliary,
+                        const Operator                       &block_jacobi,
+                        const double                          allowed_residual)
+    {
+      const bool rebuild = prepare_auxiliary_amg(auxiliary);
 
       if (settings.conjugate_gradients())
         // The block-Jacobi correction after the AMG is not symmetric: CG
@@ -690,6 +711,7 @@ namespace pdfem
         last_iterations = krylov(K, x, b, *amg, allowed_residual);
       if (rebuild)
         amg_fresh_iterations = last_iterations;
+      fresh_auxiliary_amg = false;
       return last_iterations;
     }
   } // namespace Solvers

@@ -378,3 +378,50 @@ namespace
       }
   }
 } // namespace
+
+namespace
+{
+  TEST(LinearSolver, PreparedPreconditionerIsTheOneTheSolveUses)
+  {
+    // GMRES with "amg fe" on (-1, 2.5, -1) as an operator, its matrix the
+    // auxiliary one: the AMG built by prepare_preconditioner() before the
+    // first solve gives the solve that builds its own, the same bit for
+    // bit, and is not built again (the set-up order of a run that solves).
+    const IndexSet                 owned = owned_rows(200);
+    TrilinosWrappers::SparseMatrix A;
+    make_tridiagonal(A, owned, 2.5);
+    TrilinosWrappers::MPI::Vector b(owned, MPI_COMM_WORLD);
+    for (const auto i : owned)
+      b[i] = std::sin(0.1 * i);
+    b.compress(VectorOperation::insert);
+    const pdfem::Solvers::LinearSolver::Operator product =
+      [&A](TrilinosWrappers::MPI::Vector       &y,
+           const TrilinosWrappers::MPI::Vector &v) { A.vmult(y, v); };
+    pdfem::Solvers::Settings settings;
+    settings.type           = "gmres";
+    settings.preconditioner = "amg fe";
+    settings.tolerance      = 1e-12;
+
+    std::vector<TrilinosWrappers::MPI::Vector> x(2, b);
+    std::vector<unsigned int>                  iterations(2);
+    for (const bool prepared : {false, true})
+      {
+        pdfem::Solvers::LinearSolver solver(settings);
+        solver.set_constant_modes(
+          {std::vector<bool>(owned.n_elements(), true)});
+        EXPECT_FALSE(solver.has_preconditioner_for(A));
+        if (prepared)
+          {
+            solver.prepare_preconditioner(A);
+            EXPECT_TRUE(solver.has_preconditioner_for(A));
+          }
+        iterations[prepared] = solver.solve(product, x[prepared], b, A);
+        EXPECT_TRUE(solver.has_preconditioner_for(A));
+        EXPECT_LT(relative_residual(A, x[prepared], b), 1e-11);
+      }
+    EXPECT_EQ(iterations[0], iterations[1]);
+    EXPECT_GT(iterations[0], 0u);
+    x[1] -= x[0];
+    EXPECT_EQ(x[1].linfty_norm(), 0.);
+  }
+} // namespace

@@ -111,6 +111,23 @@ namespace
     prm.leave_subsection();
   }
 
+  TEST(Plugins, DriversThatSolveSayWhetherTheySolve)
+  {
+    // The drivers of equilibria solve with the tangent, so set-up builds
+    // their preconditioner early (Coupling::Settings::prepare_solver); the
+    // drivers of forces and of the assembled matrix do not.
+    for (const std::string name : Drivers::registry().names())
+      {
+        const auto driver = Drivers::registry().create(name);
+        ASSERT_TRUE(driver) << name;
+        const bool solves = name == "static" || name == "quasi-static" ||
+                            name == "newton" || name == "arc length";
+        if (name != "test counting")
+          EXPECT_EQ(driver->solves_linear_systems(), solves) << name;
+      }
+    EXPECT_TRUE(Drivers::registry().has("arc length"));
+  }
+
   TEST(Plugins, UnknownNamesSuggestTheNearest)
   {
     const std::vector<std::string> names = {"static",

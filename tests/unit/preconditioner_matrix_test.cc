@@ -3,14 +3,21 @@
 // a crack cuts are weakened, and a node that loses every bond gets its held
 // diagonal. Updated in place after break_bonds(), it must equal the matrix
 // assembled from scratch for a body that had the same cracks from the start.
+// Built at set-up (Settings::prepare_solver, before the PD model's data), it
+// gives the solve that builds it at the first solve, and the model still
+// meets its whole initial families before the pre-existing cracks cut them.
 #include <pdfem/coupling/coupled_system.h>
+#include <pdfem/pd/families.h>
+#include <pdfem/pd_models/interface.h>
 
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 
 #include <Epetra_CrsMatrix.h>
 #include <gtest/gtest.h>
@@ -26,7 +33,11 @@ namespace
     parallel::shared::Triangulation<2>          tria{MPI_COMM_WORLD};
     std::unique_ptr<Coupling::CoupledSystem<2>> system;
 
-    explicit Plate(const std::vector<Mesh::Crack<2>> &initial_cracks)
+    explicit Plate(
+      const std::vector<Mesh::Crack<2>>                 &initial_cracks,
+      const bool                                         prepare_solver = false,
+      std::shared_ptr<PDModels::Interface<2>>            model  = nullptr,
+      const std::vector<Coupling::BoundaryCondition<2>> &pulled = {})
     {
       GridGenerator::subdivided_hyper_cube(tria, 8, 0., 1., true);
       Coupling::Settings<2> settings;
@@ -43,8 +54,14 @@ namespace
           fixed.expression   = "0";
           settings.dirichlet.push_back(fixed);
         }
+      settings.dirichlet.insert(settings.dirichlet.end(),
+                                pulled.begin(),
+                                pulled.end());
       settings.linear_solver.type           = "gmres";
       settings.linear_solver.preconditioner = "amg fe";
+      settings.linear_solver.tolerance      = 1e-12;
+      settings.prepare_solver               = prepare_solver;
+      settings.pd_model                     = model;
       system = std::make_unique<Coupling::CoupledSystem<2>>(
         tria, std::vector<bool>(tria.n_active_cells(), true), settings);
     }
@@ -113,5 +130,94 @@ namespace
     EXPECT_GT(before.first, 0.1 * before.second);
     // ... after them, only by round-off.
     EXPECT_LT(after.first, 1e-12 * after.second);
+  }
+
+  /// A PD model of no stiffness that records what the system shows it: the
+  /// intact bonds when it is initialised, and the families it is told the
+  /// pre-existing cracks cut.
+  class Recorder : public PDModels::Interface<2>
+  {
+  public:
+    void
+    initialize(const PDModels::Region<2> &r) override
+    {
+      this->region       = r;
+      const auto &intact = r.families->intact;
+      n_bonds            = intact.size();
+      n_intact_at_start  = std::count(intact.begin(), intact.end(), 1);
+    }
+
+    void
+    bonds_changed(const std::vector<std::size_t> &changed, bool) override
+    {
+      n_families_cut += changed.size();
+    }
+
+    bool
+    linear() const override
+    {
+      return true;
+    }
+
+    bool
+    symmetric() const override
+    {
+      return true;
+    }
+
+    Tensor<2, 2>
+    displacement_gradient(std::size_t,
+                          const PDModels::NodalField<2> &) const override
+    {
+      return {};
+    }
+
+    std::size_t n_bonds = 0, n_intact_at_start = 0, n_families_cut = 0;
+  };
+
+  TEST(PreconditionerMatrix, PreparedAtSetUpTheModelSeesItsWholeFamilies)
+  {
+    for (const bool prepared : {false, true})
+      {
+        auto  recorder = std::make_shared<Recorder>();
+        Plate plate(test_cracks(), prepared, recorder);
+        EXPECT_GT(recorder->n_bonds, 0u) << prepared;
+        EXPECT_EQ(recorder->n_intact_at_start, recorder->n_bonds) << prepared;
+        EXPECT_GT(recorder->n_families_cut, 0u) << prepared;
+        EXPECT_GT(plate.system->size().n_broken_bonds, 0u) << prepared;
+      }
+  }
+
+  TEST(PreconditionerMatrix, PreparedAtSetUpGivesTheSameSolve)
+  {
+    // The cracked plate pulled at its right edge, one linear solve, with
+    // the AMG built at set-up and at the first solve: the same iterations
+    // and the same displacements, bit for bit.
+    Coupling::BoundaryCondition<2> pull;
+    pull.name         = "right";
+    pull.boundary_ids = {1};
+    pull.component    = 0;
+    pull.expression   = "1e-3";
+    std::vector<TrilinosWrappers::MPI::Vector> u(2);
+    std::vector<unsigned int>                  iterations(2);
+    for (const bool prepared : {false, true})
+      {
+        Plate plate(test_cracks(), prepared, nullptr, {pull});
+        auto &system = *plate.system;
+        TrilinosWrappers::MPI::Vector r, du;
+        system.initialize_vector(u[prepared]);
+        system.initialize_vector(r);
+        system.apply_dirichlet(u[prepared], 1.);
+        const double first   = system.residual(u[prepared], 1., r, true);
+        iterations[prepared] = system.solve_linear(du, r);
+        u[prepared] += du;
+        EXPECT_LT(system.residual(u[prepared], 1., r, false), 1e-10 * first)
+          << prepared;
+      }
+    EXPECT_GT(iterations[0], 0u);
+    EXPECT_EQ(iterations[0], iterations[1]);
+    EXPECT_GT(u[0].linfty_norm(), 0.);
+    u[1] -= u[0];
+    EXPECT_EQ(u[1].linfty_norm(), 0.);
   }
 } // namespace

@@ -102,6 +102,12 @@ namespace pdfem
       /// Vertices whose bonds never break (PDLSM-FEM's no-fail region).
       std::vector<unsigned int> no_fail_vertices;
       Solvers::Settings         linear_solver;
+      /// Build the matrix-free path's preconditioner (the AMG of the FE
+      /// stiffness, "amg fe") during construction, before the PD model's
+      /// per-bond data, instead of at the first solve: the peak memory is
+      /// then the larger of the two, not their sum. For runs that solve
+      /// (Drivers::Interface::solves_linear_systems()).
+      bool prepare_solver = false;
       /// The input file, named in error messages.
       std::string source_file;
     };

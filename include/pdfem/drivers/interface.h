@@ -253,6 +253,18 @@ namespace pdfem
         return false;
       }
 
+      /**
+       * Does the driver solve linear systems with the tangent (static
+       * equilibria, Newton steps)? Set-up then builds the matrix-free
+       * path's preconditioner before the PD model's per-bond data
+       * (Coupling::Settings::prepare_solver).
+       */
+      virtual bool
+      solves_linear_systems() const
+      {
+        return false;
+      }
+
       /// Remarks for stderr before the run (e.g. an unstable choice).
       virtual std::vector<std::string>
       notes() const

@@ -93,6 +93,24 @@ namespace pdfem
             double allowed_residual                                    = 0.);
 
       /**
+       * Build now the AMG of @p auxiliary that the next solve() with it
+       * would build (nothing if it has one that is not stale). Set-up calls
+       * it before the PD model's per-bond arrays exist, so that ML's
+       * transient memory (the sparse products of its hierarchy) and those
+       * arrays are not held at once.
+       */
+      void
+      prepare_preconditioner(
+        const dealii::TrilinosWrappers::SparseMatrix &auxiliary);
+
+      /// Would solve() with @p auxiliary use the AMG this solver has (built
+      /// by prepare_preconditioner() or an earlier solve) instead of
+      /// building one?
+      bool
+      has_preconditioner_for(
+        const dealii::TrilinosWrappers::SparseMatrix &auxiliary) const;
+
+      /**
        * Solve with CG or GMRES (Type) for an operator given by its product
        * @p K, preconditioned by the operator @p preconditioner (z = P r;
        * symmetric positive definite for CG), to |b - K x| <=
@@ -252,6 +270,12 @@ namespace pdfem
         dealii::TrilinosWrappers::MPI::Vector        &x,
         const dealii::TrilinosWrappers::MPI::Vector  &b);
 
+      /// Build the AMG of @p auxiliary unless it has one that is not
+      /// stale; true if no solve has used the AMG since it was built.
+      bool
+      prepare_auxiliary_amg(
+        const dealii::TrilinosWrappers::SparseMatrix &auxiliary);
+
       /// The assembled path with Type = cg.
       unsigned int
       solve_cg(const dealii::TrilinosWrappers::SparseMatrix &K,
@@ -270,6 +294,8 @@ namespace pdfem
       bool                                          amg_stale  = false;
       unsigned int                                  amg_fresh_iterations = 0;
       unsigned int                                  last_iterations      = 0;
+      /// The auxiliary AMG was built after the last solve with it.
+      bool fresh_auxiliary_amg = false;
       /// The last CG solve's Lanczos matrix (diagonal 1/alpha_i +
       /// beta_(i-1)/alpha_(i-1), off-diagonal sqrt(beta_i)/alpha_i, as
       /// deal.II's SolverCG builds it for its estimates, which it returns
