@@ -648,18 +648,26 @@ namespace pdfem
     }
 
     bool
-    LinearSolver::prepare_auxiliary_amg(
-      const TrilinosWrappers::SparseMatrix &auxiliary)
+    LinearSolver::has_preconditioner_for(
+      const TrilinosWrappers::SparseMatrix &auxiliary) const
     {
-      // The auxiliary FE stiffness is symmetric positive definite.
       // The auxiliary matrix changes in place when cracks cut cells. ML's
       // finest level (smoother, residuals) reads the matrix itself, so
       // only the coarse levels go stale: they are rebuilt once GMRES needs
       // 10 % more iterations than right after the last build. On the
       // plateCrack FC1 input: 10 builds instead of 34, 1 109 iterations
       // instead of 1 069 (25 %: 7 builds, 1 152; 50 %: 4, 1 259).
+      return amg && amg_matrix == &auxiliary &&
+             !(amg_stale && 10 * last_iterations > 11 * amg_fresh_iterations);
+    }
+
+    void
+    LinearSolver::prepare_preconditioner(
+      const TrilinosWrappers::SparseMatrix &auxiliary)
+    {
+      // The auxiliary FE stiffness is symmetric positive definite.
       if (has_preconditioner_for(auxiliary))
-        return fresh_auxiliary_amg;
+        return;
       amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
       initialize_amg(*amg,
                      auxiliary,
@@ -669,22 +677,6 @@ namespace pdfem
       amg_matrix          = &auxiliary;
       amg_stale           = false;
       fresh_auxiliary_amg = true;
-      return true;
-    }
-
-    bool
-    LinearSolver::has_preconditioner_for(
-      const TrilinosWrappers::SparseMatrix &auxiliary) const
-    {
-      return amg && amg_matrix == &auxiliary &&
-             !(amg_stale && 10 * last_iterations > 11 * amg_fresh_iterations);
-    }
-
-    void
-    LinearSolver::prepare_preconditioner(
-      const TrilinosWrappers::SparseMatrix &auxiliary)
-    {
-      prepare_auxiliary_amg(auxiliary);
     }
 
     unsigned int
@@ -695,7 +687,7 @@ namespace pdfem
                         const Operator                       &block_jacobi,
                         const double                          allowed_residual)
     {
-      const bool rebuild = prepare_auxiliary_amg(auxiliary);
+      prepare_preconditioner(auxiliary);
 
       if (settings.conjugate_gradients())
         // The block-Jacobi correction after the AMG is not symmetric: CG
@@ -709,7 +701,9 @@ namespace pdfem
                                  allowed_residual);
       else
         last_iterations = krylov(K, x, b, *amg, allowed_residual);
-      if (rebuild)
+      // The iterations with an AMG built for this solve (or ahead of it)
+      // are the measure of its going stale.
+      if (fresh_auxiliary_amg)
         amg_fresh_iterations = last_iterations;
       fresh_auxiliary_amg = false;
       return last_iterations;

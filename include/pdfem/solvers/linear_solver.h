@@ -270,12 +270,6 @@ namespace pdfem
         dealii::TrilinosWrappers::MPI::Vector        &x,
         const dealii::TrilinosWrappers::MPI::Vector  &b);
 
-      /// Build the AMG of @p auxiliary unless it has one that is not
-      /// stale; true if no solve has used the AMG since it was built.
-      bool
-      prepare_auxiliary_amg(
-        const dealii::TrilinosWrappers::SparseMatrix &auxiliary);
-
       /// The assembled path with Type = cg.
       unsigned int
       solve_cg(const dealii::TrilinosWrappers::SparseMatrix &K,
@@ -294,7 +288,7 @@ namespace pdfem
       bool                                          amg_stale  = false;
       unsigned int                                  amg_fresh_iterations = 0;
       unsigned int                                  last_iterations      = 0;
-      /// The auxiliary AMG was built after the last solve with it.
+      /// No solve has used the auxiliary AMG since it was built.
       bool fresh_auxiliary_amg = false;
       /// The last CG solve's Lanczos matrix (diagonal 1/alpha_i +
       /// beta_(i-1)/alpha_(i-1), off-diagonal sqrt(beta_i)/alpha_i, as
