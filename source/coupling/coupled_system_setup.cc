@@ -3,6 +3,7 @@
 // (the families and their weights: coupled_system_families.cc).
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/group_by_key.h>
 
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/mpi.h>
@@ -13,7 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 
 #include "coupled_system_impl.h"
 
@@ -305,21 +305,13 @@ namespace pdfem
               }
             cell_offsets.push_back(cell_nodes.size());
           }
-      // The cells of each node, as compressed rows.
-      std::vector<unsigned int> node_offsets(n_nodes + 1, 0), node_cells;
-      for (const unsigned int k : cell_nodes)
-        ++node_offsets[k + 1];
-      std::partial_sum(node_offsets.begin(),
-                       node_offsets.end(),
-                       node_offsets.begin());
-      node_cells.resize(cell_nodes.size());
-      {
-        std::vector<unsigned int> next(node_offsets.begin(),
-                                       node_offsets.end() - 1);
-        for (unsigned int c = 0; c + 1 < cell_offsets.size(); ++c)
-          for (unsigned int i = cell_offsets[c]; i < cell_offsets[c + 1]; ++i)
-            node_cells[next[cell_nodes[i]]++] = c;
-      }
+      // The cells of each node.
+      const auto [node_offsets, node_cells] =
+        group_by_key<unsigned int>(n_nodes, [&](const auto &emit) {
+          for (unsigned int c = 0; c + 1 < cell_offsets.size(); ++c)
+            for (unsigned int i = cell_offsets[c]; i < cell_offsets[c + 1]; ++i)
+              emit(cell_nodes[i], c);
+        });
 
       std::vector<unsigned int>            neighbours;
       std::vector<types::global_dof_index> columns;
@@ -329,7 +321,7 @@ namespace pdfem
               node_offsets[k] == node_offsets[k + 1])
             continue;
           neighbours.clear();
-          for (unsigned int i = node_offsets[k]; i < node_offsets[k + 1]; ++i)
+          for (std::size_t i = node_offsets[k]; i < node_offsets[k + 1]; ++i)
             {
               const unsigned int c = node_cells[i];
               neighbours.insert(neighbours.end(),

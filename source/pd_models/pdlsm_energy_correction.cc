@@ -4,6 +4,7 @@
 // preconditioned by a sparse factorisation of the regularised operator.
 #include <pdfem/base/config.h>
 #include <pdfem/base/exceptions.h>
+#include <pdfem/base/group_by_key.h>
 #include <pdfem/base/parameter_tools.h>
 #include <pdfem/pd/families.h>
 #include <pdfem/pd_models/pdlsm_energy.h>
@@ -118,29 +119,6 @@ namespace pdfem
                     0,
                     comm);
         return all;
-      }
-
-      /**
-       * Items grouped by their key (< @p n), by counting sort: for_each(emit)
-       * calls emit(key, item) for every item (it is called twice, to count
-       * and to place); the items of key k are grouped[start[k] ..
-       * start[k + 1]], in the order emitted.
-       */
-      template <typename Item, typename ForEach>
-      std::pair<std::vector<std::size_t>, std::vector<Item>>
-      group_by_key(const std::size_t n, const ForEach &for_each)
-      {
-        std::vector<std::size_t> start(n + 1, 0);
-        for_each(
-          [&](const std::size_t key, const Item &) { ++start[key + 1]; });
-        for (std::size_t k = 0; k < n; ++k)
-          start[k + 1] += start[k];
-        std::vector<Item>        grouped(start[n]);
-        std::vector<std::size_t> next(start.begin(), start.end() - 1);
-        for_each([&](const std::size_t key, const Item &item) {
-          grouped[next[key]++] = item;
-        });
-        return {std::move(start), std::move(grouped)};
       }
 
       /// Rows of a sparse matrix: rows[i] has row_length[i] entries, the

@@ -46,9 +46,8 @@ namespace pdfem
     const PDModels::Layout &layout = model->layout();
     // Products of a symmetric tangent serve every driver of nonlinear
     // models: the relaxation's row bounds come from the tangent's rows.
-    const bool tangent_products = layout.tangent_products &&
-                                  model->symmetric() && layout.tangent &&
-                                  !layout.family_elements;
+    const bool tangent_products =
+      layout.tangent_products && model->symmetric() && layout.tangent_rows();
     return linear_solver.resolve(!model->linear(),
                                  driver.needs_assembled_matrix(),
                                  !layout.tangent,
@@ -219,8 +218,7 @@ namespace pdfem
                       driver_settings.type,
                       plugins.model &&
                         plugins.model->layout().smooth_degradation,
-                      plugins.model && plugins.model->layout().tangent &&
-                        !plugins.model->layout().family_elements),
+                      plugins.model && plugins.model->layout().tangent_rows()),
       fracture);
     return plugins;
   }

@@ -571,7 +571,7 @@ namespace pdfem
                          TrilinosWrappers::MPI::Vector       &x,
                          const TrilinosWrappers::MPI::Vector &b,
                          const Preconditioner                &P,
-                         const double allowed_residual) const
+                         const double                         allowed_residual)
     {
       const double  b_norm = b.l2_norm();
       SolverControl control(settings.max_iterations,

@@ -245,6 +245,14 @@ namespace
       }
   }
 
+  /// The product with @p A, as the operator interface of solve() takes it.
+  pdfem::Solvers::LinearSolver::Operator
+  product_of(const TrilinosWrappers::SparseMatrix &A)
+  {
+    return [&A](TrilinosWrappers::MPI::Vector       &y,
+                const TrilinosWrappers::MPI::Vector &v) { A.vmult(y, v); };
+  }
+
   /// CG (tolerance 1e-12, no preconditioner) on (-1, @p d, -1) with
   /// b_i = 1 + 0.1 i through the operator interface; the failure's message,
   /// or empty where CG converged.
@@ -259,9 +267,7 @@ namespace
     for (const auto i : owned)
       b[i] = 1. + 0.1 * i;
     b.compress(VectorOperation::insert);
-    const pdfem::Solvers::LinearSolver::Operator product =
-      [&A](TrilinosWrappers::MPI::Vector       &y,
-           const TrilinosWrappers::MPI::Vector &v) { A.vmult(y, v); };
+    const auto                                   product = product_of(A);
     const pdfem::Solvers::LinearSolver::Operator identity =
       [](TrilinosWrappers::MPI::Vector       &z,
          const TrilinosWrappers::MPI::Vector &r) { z = r; };
@@ -377,10 +383,7 @@ namespace
           }
       }
   }
-} // namespace
 
-namespace
-{
   TEST(LinearSolver, PreparedPreconditionerIsTheOneTheSolveUses)
   {
     // GMRES with "amg fe" on (-1, 2.5, -1) as an operator, its matrix the
@@ -394,9 +397,7 @@ namespace
     for (const auto i : owned)
       b[i] = std::sin(0.1 * i);
     b.compress(VectorOperation::insert);
-    const pdfem::Solvers::LinearSolver::Operator product =
-      [&A](TrilinosWrappers::MPI::Vector       &y,
-           const TrilinosWrappers::MPI::Vector &v) { A.vmult(y, v); };
+    const auto               product = product_of(A);
     pdfem::Solvers::Settings settings;
     settings.type           = "gmres";
     settings.preconditioner = "amg fe";

@@ -156,6 +156,14 @@ namespace pdfem
       /// over the boundary's area, so that the resultant is t A); 0: on the
       /// boundary faces (the nodes' shares of the face integral).
       double traction_layer = 0.;
+
+      /// The model gives its tangent row by row (tangent_row()): it has a
+      /// tangent, and not as family elements.
+      bool
+      tangent_rows() const
+      {
+        return tangent && !family_elements;
+      }
     };
 
     /**

@@ -242,7 +242,7 @@ namespace pdfem
              dealii::TrilinosWrappers::MPI::Vector       &x,
              const dealii::TrilinosWrappers::MPI::Vector &b,
              const Preconditioner                        &P,
-             double allowed_residual) const;
+             double                                       allowed_residual);
 
       /// Build the ML hierarchy of the assembled @p K (symmetric smoothed
       /// aggregation for CG) unless the one kept is still good; returns
@@ -295,7 +295,7 @@ namespace pdfem
       /// deal.II's SolverCG builds it for its estimates, which it returns
       /// as absolute values) of the last solve of an operator; empty where
       /// that was GMRES.
-      mutable std::vector<double> lanczos_diagonal, lanczos_off_diagonal;
+      std::vector<double> lanczos_diagonal, lanczos_off_diagonal;
       /// The direct path's factorisation of *direct_matrix (nullptr: none
       /// kept), and the control SolverDirect refers to.
       /// The direct path's Amesos solver, its analysis of a matrix and,
