@@ -481,6 +481,8 @@ namespace pdfem
       /// The families and the bonds the pre-existing cracks cut
       /// (make_families(), for initialize_model()).
       std::vector<std::size_t> families_cut_at_start, bonds_cut_at_start;
+      /// The wall seconds of the constructor's phases (setup_phases()).
+      std::vector<std::pair<std::string, double>> setup_phases;
       /// Per family owner: held as part of a fragment (hold_fragments()).
       std::vector<std::uint8_t> fragment;
       /// What broke bonds or held nodes since construction, in order:

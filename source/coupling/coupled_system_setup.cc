@@ -12,6 +12,7 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -543,18 +544,41 @@ namespace pdfem
       const Settings<dim>                             &settings)
       : impl(std::make_unique<Impl>(tria, cell_is_pd, settings))
     {
-      impl->make_fe_and_dofs();
-      impl->make_nodes();
-      impl->make_boundary_conditions();
-      impl->make_pd_boundary();
-      impl->make_families();
-      impl->make_sparsity();
-      impl->update_held();
-      impl->assemble_fe_matrix();
-      impl->prepare_solver();
-      impl->initialize_model();
-      impl->make_traction_layers();
-      impl->make_pd_chunks();
+      Impl &s     = *impl;
+      auto  start = std::chrono::steady_clock::now();
+      // Each phase's wall seconds, for summary.json (setup_phases()).
+      const auto phase = [&](const char *name, const auto &steps) {
+        steps();
+        const auto now = std::chrono::steady_clock::now();
+        s.setup_phases.emplace_back(
+          name, std::chrono::duration<double>(now - start).count());
+        start = now;
+      };
+      phase("dofs", [&] { s.make_fe_and_dofs(); });
+      phase("nodes", [&] {
+        s.make_nodes();
+        s.make_boundary_conditions();
+        s.make_pd_boundary();
+      });
+      phase("families", [&] { s.make_families(); });
+      phase("fe_matrix", [&] {
+        s.make_sparsity();
+        s.update_held();
+        s.assemble_fe_matrix();
+      });
+      phase("preconditioner", [&] { s.prepare_solver(); });
+      phase("pd_model", [&] { s.initialize_model(); });
+      phase("operator", [&] {
+        s.make_traction_layers();
+        s.make_pd_chunks();
+      });
+    }
+
+    template <int dim>
+    const std::vector<std::pair<std::string, double>> &
+    CoupledSystem<dim>::setup_phases() const
+    {
+      return impl->setup_phases;
     }
 
     template <int dim>

@@ -110,6 +110,7 @@ namespace pdfem
                                                              setup.cell_is_pd,
                                                              setup.settings);
     initial_size = coupled->size();
+    setup_phases = coupled->setup_phases();
     // A static solve needs every piece of the body held against rigid
     // motion (a dynamic one does not: the mass holds it).
     if (!driver->dynamic())

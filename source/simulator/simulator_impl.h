@@ -247,8 +247,11 @@ namespace pdfem
     std::unique_ptr<Drivers::StabilityReport> last_check;
     Drivers::DynamicRecord                    time_step_record;
     Coupling::ProblemSize                     initial_size;
-    double                                    load_factor = 0.;
-    unsigned int                              n_steps     = 0;
+    /// The set-up's phases (CoupledSystem::setup_phases() of the first
+    /// system; a grown PD region's rebuilds count in the driver's time).
+    std::vector<std::pair<std::string, double>> setup_phases;
+    double                                      load_factor = 0.;
+    unsigned int                                n_steps     = 0;
     /// The solver's changes of path already printed (Type = auto).
     mutable std::size_t printed_solver_switches = 0;
     /// The largest secant stiffness of the grips so far (quasi-static

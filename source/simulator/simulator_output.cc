@@ -216,6 +216,10 @@ namespace pdfem
     json.begin_object("timings");
     for (const auto &[phase, seconds] : setup.timings)
       json.value(phase, seconds);
+    json.begin_object("setup_phases");
+    for (const auto &[phase, seconds] : setup_phases)
+      json.value(phase, seconds);
+    json.end_object();
     json.end_object();
     json.value("peak_memory_mb_rank0", peak_memory_mb);
     json.end_object();
@@ -230,11 +234,20 @@ namespace pdfem
     const internal::KeepFormat keep(*progress);
     *progress << "Exit state: " << exit_state << ". Results in "
               << setup.out_dir << "/" << std::endl;
-    if (setup.print_timings)
-      for (const auto &[phase, seconds] : setup.timings)
-        *progress << "  " << std::setw(24) << std::left << phase << std::right
-                  << std::setw(10) << std::fixed << std::setprecision(3)
-                  << seconds << " s" << std::defaultfloat << std::endl;
+    if (!setup.print_timings)
+      return;
+    const auto line = [&](const std::string &name, const double seconds) {
+      *progress << "  " << std::setw(24) << std::left << name << std::right
+                << std::setw(10) << std::fixed << std::setprecision(3)
+                << seconds << " s" << std::defaultfloat << std::endl;
+    };
+    for (const auto &[phase, seconds] : setup.timings)
+      {
+        line(phase, seconds);
+        if (phase == "setup")
+          for (const auto &[part, part_seconds] : setup_phases)
+            line("  " + part, part_seconds);
+      }
   }
 
   template <int dim>

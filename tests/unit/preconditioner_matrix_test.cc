@@ -7,17 +7,24 @@
 // gives the solve that builds it at the first solve, and the model still
 // meets its whole initial families before the pre-existing cracks cut them.
 #include <pdfem/coupling/coupled_system.h>
+#include <pdfem/fe/elastic_material.h>
 #include <pdfem/pd/families.h>
 #include <pdfem/pd_models/interface.h>
 
+#include <deal.II/base/quadrature_lib.h>
+
 #include <deal.II/distributed/shared_tria.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/hp/mapping_collection.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <memory>
+#include <set>
 
 #include <Epetra_CrsMatrix.h>
 #include <gtest/gtest.h>
@@ -27,7 +34,8 @@ namespace
   using namespace dealii;
   using namespace pdfem;
 
-  /// A 1 x 1 plate of 8 x 8 PD cells, fixed at its left edge.
+  /// A 1 x 1 plate of 8 x 8 PD cells (or the mesh @p mesh makes), fixed at
+  /// its left edge (boundary id 0).
   struct Plate
   {
     parallel::shared::Triangulation<2>          tria{MPI_COMM_WORLD};
@@ -37,9 +45,13 @@ namespace
       const std::vector<Mesh::Crack<2>>                 &initial_cracks,
       const bool                                         prepare_solver = false,
       std::shared_ptr<PDModels::Interface<2>>            model  = nullptr,
-      const std::vector<Coupling::BoundaryCondition<2>> &pulled = {})
+      const std::vector<Coupling::BoundaryCondition<2>> &pulled = {},
+      const std::function<void(Triangulation<2> &)>     &mesh   = {})
     {
-      GridGenerator::subdivided_hyper_cube(tria, 8, 0., 1., true);
+      if (mesh)
+        mesh(tria);
+      else
+        GridGenerator::subdivided_hyper_cube(tria, 8, 0., 1., true);
       Coupling::Settings<2> settings;
       settings.material.youngs_modulus = 1e9;
       settings.material.poissons_ratio = 0.25;
@@ -174,6 +186,87 @@ namespace
 
     std::size_t n_bonds = 0, n_intact_at_start = 0, n_families_cut = 0;
   };
+
+  TEST(PreconditionerMatrix, CellsOfOneShapeShareTheirStiffness)
+  {
+    // 16 x 16 cells with widths 1, 2, 1, 2, ... and heights 1, 2, 4, 1, ...:
+    // integer coordinates, so six shapes, each cell a translate of one of
+    // them to the bit. The cell matrices are computed once per shape
+    // (add_cell_stiffness(): 256 cells or more, at most a quarter of them
+    // shapes); the matrix must be the sum of every cell's own stiffness.
+    std::vector<std::vector<double>> steps(2);
+    for (unsigned int i = 0; i < 16; ++i)
+      {
+        steps[0].push_back(1. + i % 2);
+        steps[1].push_back(double(1u << (i % 3)));
+      }
+    Point<2> far;
+    for (unsigned int d = 0; d < 2; ++d)
+      for (const double h : steps[d])
+        far[d] += h;
+    Plate plate(
+      {}, false, std::make_shared<Recorder>(), {}, [&](Triangulation<2> &tria) {
+        GridGenerator::subdivided_hyper_rectangle(
+          tria, steps, Point<2>(), far, true);
+      });
+    const auto &dofs = plate.system->dof_handler();
+    ASSERT_EQ(dofs.get_triangulation().n_active_cells(), 256u);
+
+    // Each cell's own stiffness (deal.II's FEValues on the cell itself),
+    // summed; DoFs at x = 0 are held, their rows and columns left out.
+    FE::ElasticMaterial material;
+    material.youngs_modulus = 1e9;
+    material.poissons_ratio = 0.25;
+    material.plane_stress   = true;
+    std::map<std::pair<types::global_dof_index, types::global_dof_index>,
+             double>
+                                         reference;
+    std::set<types::global_dof_index>    held;
+    std::vector<double>                  K;
+    std::vector<types::global_dof_index> cell_dofs;
+    for (const auto &cell : dofs.active_cell_iterators())
+      {
+        const auto &fe = cell->get_fe();
+        FEValues<2> fv(plate.system->mapping()[cell->active_fe_index()],
+                       fe,
+                       QGauss<2>(2),
+                       update_gradients | update_JxW_values);
+        fv.reinit(cell);
+        FE::cell_stiffness(fv, material, K);
+        cell_dofs.resize(fe.n_dofs_per_cell());
+        cell->get_dof_indices(cell_dofs);
+        for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+          {
+            if (cell->vertex(fe.system_to_component_index(i).second)[0] == 0.)
+              held.insert(cell_dofs[i]);
+            for (unsigned int j = 0; j < cell_dofs.size(); ++j)
+              reference[{cell_dofs[i], cell_dofs[j]}] +=
+                K[i * cell_dofs.size() + j];
+          }
+      }
+    ASSERT_FALSE(held.empty());
+
+    const Epetra_CrsMatrix &A =
+      plate.system->preconditioner_matrix().trilinos_matrix();
+    double largest = 0., difference = 0.;
+    for (const auto &[entry, value] : reference)
+      {
+        if (held.count(entry.first) || held.count(entry.second))
+          continue;
+        int     n = 0;
+        double *v = nullptr;
+        int    *c = nullptr;
+        A.ExtractMyRowView(A.LRID(int(entry.first)), n, v, c);
+        double found = 0.;
+        for (int e = 0; e < n; ++e)
+          if (A.GCID(c[e]) == int(entry.second))
+            found = v[e];
+        largest    = std::max(largest, std::abs(value));
+        difference = std::max(difference, std::abs(found - value));
+      }
+    EXPECT_GT(largest, 0.);
+    EXPECT_LT(difference, 1e-13 * largest);
+  }
 
   TEST(PreconditionerMatrix, PreparedAtSetUpTheModelSeesItsWholeFamilies)
   {

@@ -17,6 +17,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dealii
@@ -401,6 +402,22 @@ namespace pdfem
       /// Global counts (the same on every rank).
       ProblemSize
       size() const;
+
+      /**
+       * The wall seconds of the construction's phases on this rank, in
+       * their order: "dofs" (the finite elements and the DoF
+       * numbering), "nodes" (node data, boundary conditions, the PD
+       * boundary), "families" (the bonds, pre-existing cracks cut),
+       * "fe_matrix" (the sparsity patterns and the cells' stiffness, of the FE
+       * matrix and the "amg fe" matrix),
+       * "preconditioner" (the "amg fe" hierarchy where the driver solves
+       * linear systems and the linear solver uses it, else about 0),
+       * "pd_model" (the model's initialize(), e.g. the PDLSM fit) and
+       * "operator" (traction layers, the PD product's chunks). summary.json
+       * lists them under timings.setup_phases.
+       */
+      const std::vector<std::pair<std::string, double>> &
+      setup_phases() const;
 
       /**
        * The matrix the "amg fe" preconditioner is built from (doc/theory.md
