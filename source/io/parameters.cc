@@ -515,7 +515,9 @@ namespace pdfem
       prm.declare_entry("Print timings",
                         "false",
                         Bool(),
-                        "Print a table of wall times per phase at the end.");
+                        "Print a table of wall times per phase at the end "
+                        "(the set-up with its parts, as summary.json's "
+                        "timings.setup_phases).");
       prm.declare_entry(
         "Checkpoint steps",
         "0",
