@@ -200,12 +200,21 @@ namespace pdfem
           Impl{system, material, {}, {}, {}, {}, {}, {}, {}, {}}))
     {
       Impl &s = *impl;
-      s.fe.push_back(FE_Q<dim>(1));
-      s.fe.push_back(FE_SimplexP<dim>(1));
-      s.quadrature.push_back(QGauss<dim>(4));
-      s.quadrature.push_back(QGaussSimplex<dim>(3));
-      s.face_quadrature.push_back(QGauss<dim - 1>(4));
-      s.face_quadrature.push_back(QGaussSimplex<dim - 1>(3));
+      // In the order of the system's collections (its mapping's): one
+      // element per kind of cell its mesh has.
+      for (const auto &element : system.node_dof_handler().get_fe_collection())
+        if (element.reference_cell().is_hyper_cube())
+          {
+            s.fe.push_back(FE_Q<dim>(1));
+            s.quadrature.push_back(QGauss<dim>(4));
+            s.face_quadrature.push_back(QGauss<dim - 1>(4));
+          }
+        else
+          {
+            s.fe.push_back(FE_SimplexP<dim>(1));
+            s.quadrature.push_back(QGaussSimplex<dim>(3));
+            s.face_quadrature.push_back(QGaussSimplex<dim - 1>(3));
+          }
       for (const auto &cell : system.node_dof_handler().active_cell_iterators())
         {
           s.cells.push_back(cell);

@@ -573,6 +573,9 @@ namespace pdfem
 
       /// For output: the vector DoFHandler, the per-node scalar DoFHandler and
       /// its numbering, the mapping collection and the PD flag of the cells.
+      /// The collections hold one element per kind of cell the mesh has
+      /// (Q1 before P1); a mesh of one kind gives a DoFHandler without hp,
+      /// whose cells all have active_fe_index() 0.
       const dealii::DoFHandler<dim, dim> &
       dof_handler() const;
       const dealii::DoFHandler<dim, dim> &
