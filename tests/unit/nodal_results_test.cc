@@ -3,7 +3,8 @@
 // - The FE cells' vertex gradients (cached weights, no FEValues per call)
 //   reproduce fields the elements represent exactly: a linear field on
 //   curved quadrilaterals and on triangles, and x y on rectangles, where the
-//   gradient varies from vertex to vertex.
+//   gradient varies from vertex to vertex. Meshes of one kind of cell
+//   get one element (Q1 or P1) and DoFHandlers without hp.
 // - The criterion skips the bonds whose bound cannot matter; what it
 //   reports must equal the largest principal stress over every intact bond.
 #include <pdfem/coupling/coupled_system.h>
@@ -92,9 +93,14 @@ namespace
               },
               tria);
           }
-        Coupling::CoupledSystem<2>    system(tria,
+        Coupling::CoupledSystem<2> system(tria,
                                           pd_cells(tria, 0.4),
                                           plate_settings());
+        // A mesh of one kind of cell is numbered without hp: one element.
+        EXPECT_FALSE(system.dof_handler().has_hp_capabilities());
+        EXPECT_EQ(system.dof_handler().get_fe_collection().size(), 1u);
+        EXPECT_EQ(system.node_dof_handler().get_fe(0).reference_cell(),
+                  tria.begin_active()->reference_cell());
         TrilinosWrappers::MPI::Vector u;
         system.initialize_vector(u);
         system.interpolate({"1e-3*x+2e-3*y", "-5e-4*x+3e-3*y"}, "test", u);
