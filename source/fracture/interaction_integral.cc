@@ -559,7 +559,9 @@ namespace pdfem
       // The cells on the threads, each cell's share summed in a fixed order
       // below: the same K on any number of threads. The mixed-mode scenes
       // of fracture.md (two tips, ~300 cells each) spent 0.12 s of their
-      // 1.6 s here on one thread.
+      // 1.6 s here on one thread; with two threads (and the duals' one
+      // evaluation per point) their criterion took 0.11-0.13 s instead of
+      // 0.16-0.20 s.
       std::vector<Share>                      shares(domain.size(), Share{});
       ThreadTeam                             &team = ThreadTeam::shared();
       std::vector<std::unique_ptr<Workspace>> workspaces(team.size());
