@@ -44,13 +44,13 @@ for round in $(seq 1 "$rounds"); do
   done
 done
 
-(echo "kind,ranks,round,dofs,threads,mesh_s,setup_s,assembly_s,solve_s,output_s,total_s,process_wall_s,peak_mb_rank0,steps,fe_matrix_s,pd_model_s,preconditioner_s"
-  cat "$raw") > "$out/scaling_parallel_runs.csv"
-python3 - "$raw" "$out/scaling_parallel.csv" "$cores" << 'PY'
+# the columns of run()'s lines
+cols=kind,ranks,round,dofs,threads,mesh_s,setup_s,assembly_s,solve_s,output_s,total_s,process_wall_s
+cols+=,peak_mb_rank0,steps,fe_matrix_s,pd_model_s,preconditioner_s
+(echo "$cols" && cat "$raw") > "$out/scaling_parallel_runs.csv"
+python3 - "$out/scaling_parallel_runs.csv" "$out/scaling_parallel.csv" "$cores" << 'PY'
 import csv, statistics, sys
-cols = ("kind,ranks,round,dofs,threads,mesh_s,setup_s,assembly_s,solve_s,output_s,total_s,process_wall_s,"
-        "peak_mb_rank0,steps,fe_matrix_s,pd_model_s,preconditioner_s").split(",")
-rows = [dict(zip(cols, l.strip().split(","))) for l in open(sys.argv[1]) if l.strip()]
+rows = list(csv.DictReader(open(sys.argv[1])))
 cores = int(sys.argv[3])
 med = {}
 for r in rows:
