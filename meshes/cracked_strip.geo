@@ -20,6 +20,12 @@ W  = 0.5;
 H  = 1.5;
 B  = 0.15;
 
+// A file that sets fe_triangles = 1 and then includes this one gets the FE
+// blocks in triangles: a mesh of two kinds of cell.
+If (!Exists(fe_triangles))
+  fe_triangles = 0;
+EndIf
+
 Mesh.ElementOrder = 1;
 
 Point(1) = {-W, -H, 0};
@@ -53,7 +59,10 @@ Transfinite Curve {1, 3, 6, 9} = nx + 1;
 Transfinite Curve {5, 7}       = ny + 1;
 Transfinite Curve {2, 4, 8, 10} = nb + 1;
 Transfinite Surface {1, 2, 3};
-Recombine Surface {1, 2, 3};
+Recombine Surface {2};
+If (!fe_triangles)
+  Recombine Surface {1, 3};
+EndIf
 
 Physical Surface("pd", 11) = {2};
 Physical Surface("fe", 12) = {1, 3};
