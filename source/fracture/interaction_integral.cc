@@ -376,13 +376,10 @@ namespace pdfem
           }
         else if constexpr (dim == 3)
           {
-            const auto [x1, x2] = plane_coordinates(xl[0], xl[1]);
-            const Dual r        = sqrt(x1 * x1 + x2 * x2);
-            const Dual theta    = atan2(x2, x1);
-            const Dual u3 =
-              (2. / (mu * std::sqrt(2. * M_PI))) * sqrt(r) * sin(0.5 * theta);
+            const Tensor<1, 2> g =
+              mode_iii_gradient(Point<2>(xl[0], xl[1]), mu);
             for (unsigned int j = 0; j < 2; ++j)
-              Ga[2][j] = u3.d[j];
+              Ga[2][j] = g[j];
           }
         return Ga;
       };

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The interaction integral's auxiliary fields: the Williams near-tip
-// displacements and their gradients by forward-mode dual numbers (internal
-// to source/fracture).
+// The interaction integral's auxiliary fields: the near-tip displacements
+// of modes I, II (Williams) and III and their gradients by forward-mode
+// dual numbers (internal to source/fracture).
 #ifndef PDFEM_FRACTURE_WILLIAMS_FIELDS_H
 #define PDFEM_FRACTURE_WILLIAMS_FIELDS_H
 
@@ -119,6 +119,19 @@ namespace pdfem
           for (unsigned int j = 0; j < 2; ++j)
             g[i][j] = u[i].d[j];
         return g;
+      }
+
+      /// grad u_3 (d/dx1, d/dx2) of the mode III field of unit K_III,
+      /// u_3 = 2/mu sqrt(r/2pi) sin(theta/2), at (x1, x2) in tip axes.
+      inline dealii::Tensor<1, 2>
+      mode_iii_gradient(const dealii::Point<2> &x, const double mu)
+      {
+        const auto [x1, x2] = plane_coordinates(x[0], x[1]);
+        const Dual r        = sqrt(x1 * x1 + x2 * x2);
+        const Dual theta    = atan2(x2, x1);
+        const Dual u3 =
+          (2. / (mu * std::sqrt(2. * M_PI))) * sqrt(r) * sin(0.5 * theta);
+        return dealii::Tensor<1, 2>({u3.d[0], u3.d[1]});
       }
     } // namespace internal
   }   // namespace Fracture
