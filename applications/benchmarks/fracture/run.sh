@@ -15,8 +15,9 @@
 #      -> growth_adaptive.csv;
 #   5. mixed-mode growth on mostly-PD meshes (mixed_mode_plate.prm: 62.7 and 81.3 % PD cells,
 #      cracks at 30 and 45 degrees; the peer's operator, and once the energy form that
-#      Model = auto picks): pdfem's own and the whole process's time, the solver's share and
-#      iterations -> growth_mixed_mode.csv, a picture of one crack path.
+#      Model = auto picks), meshed in the run and read from the mesh file it wrote: pdfem's own
+#      and the whole process's time, the solver's share and iterations -> growth_mixed_mode.csv,
+#      a picture of one crack path.
 # Writes CSV and PNG files into doc/benchmarks/ (PNG only when pdfem-plot is built).
 #
 # usage: [SECTIONS=1234] applications/benchmarks/fracture/run.sh [BUILD_DIR] [OUT_DIR]
@@ -163,31 +164,42 @@ fi
 # ---- 5. mixed-mode growth on mostly-PD meshes
 if [[ $sections == *5* ]]; then
 csv="$out/fracture_growth_mixed_mode.csv"
-echo "model,n_pd,theta_deg,dofs,pd_cell_share,steps,exit_state,peak_RF,solves,linear_iterations,solve_s,criterion_s,pdfem_s,process_wall_s,peak_memory_mb" > "$csv"
-mixed() { # model n_pd theta
-  local model=$1 n_pd=$2 theta=$3 crack dir write_vtu=false start wall its
+echo "model,n_pd,theta_deg,mesh_input,dofs,pd_cell_share,steps,exit_state,peak_RF,solves,linear_iterations,solve_s,criterion_s,pdfem_s,process_wall_s,peak_memory_mb" > "$csv"
+# mixed MODEL N_PD THETA INPUT: INPUT "geo" meshes mixed_mode_plate.geo in the run (gmsh's API);
+# "msh" reads the mesh the geo run wrote, as the peer reads its mesh file (the same cells and
+# numbering: history.csv is the same bit for bit), so that the time compares like with like.
+mixed() {
+  local model=$1 n_pd=$2 theta=$3 input=$4 crack dir mesh write_vtu=false start wall its
   sed "s/^n_pd = 47;/n_pd = $n_pd;/" "$here/mixed_mode_plate.geo" > "$work/mixed_mode_plate_$n_pd.geo"
   crack=$(awk -v t="$theta" 'BEGIN { r = t * atan2(0, -1) / 180; x = 0.098 * sin(r); y = 0.098 * cos(r);
                                      printf "(0, 0) -- (%.17g, %.17g); (0, 0) -- (%.17g, %.17g)", x, y, -x, -y }')
   dir="$work/mixed_${model// /_}_${n_pd}_$theta"
-  [ "$model$n_pd$theta" = pdlsm4745 ] && write_vtu=true
+  mesh="$work/mixed_mode_plate_$n_pd.geo"
+  if [ "$input" = msh ]; then
+    mesh="$dir/mixed_mode_plate_$n_pd.msh"
+    dir="$dir-msh"
+  fi
+  [ "$model$n_pd$theta$input" = pdlsm4745geo ] && write_vtu=true
   start=$(date +%s.%N)
-  "$pdfem" "$here/mixed_mode_plate.prm" --quiet --output "$dir" --set "Mesh/Input file=$work/mixed_mode_plate_$n_pd.geo" \
+  "$pdfem" "$here/mixed_mode_plate.prm" --quiet --output "$dir" --set "Mesh/Input file=$mesh" \
     --set "Peridynamics/Pre-existing cracks=$crack" --set "Peridynamics/Model=$model" \
     --set "Output/Write vtu=$write_vtu" --set "Output/Write every=1000" 2> /dev/null || true
   wall=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.2f", e - s }')
   its=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "linear_iterations") c = i } NR > 1 { s += $c } END { print s }' "$dir/history.csv")
-  printf '%s,%s,%s,%s,%.3f,%s,%s,%.5e,%s,%s,%.2f,%.2f,%.2f,%s,%.0f\n' "$(v "$dir" pd_model.name)" "$n_pd" "$theta" \
+  printf '%s,%s,%s,%s,%s,%.3f,%s,%s,%.5e,%s,%s,%.2f,%.2f,%.2f,%s,%.0f\n' "$(v "$dir" pd_model.name)" "$n_pd" "$theta" "$input" \
     "$(v "$dir" problem.dofs)" "$(awk -v p="$(v "$dir" problem.pd_cells)" -v c="$(v "$dir" problem.cells)" 'BEGIN { print p / c }')" \
     "$(v "$dir" steps)" "$(v "$dir" exit_state)" "$(v "$dir" peak_reaction.RF.x)" \
     "$(v "$dir" linear_solver.choice.solves)" "$its" "$(v "$dir" timings.solve)" "$(v "$dir" timings.criterion)" \
     "$(v "$dir" timings.total)" "$wall" "$(v "$dir" peak_memory_mb_rank0)" >> "$csv"
 }
 for n_pd in 47 61; do
-  for theta in 30 45; do mixed pdlsm "$n_pd" "$theta"; done
+  for theta in 30 45; do
+    mixed pdlsm "$n_pd" "$theta" geo
+    mixed pdlsm "$n_pd" "$theta" msh
+  done
 done
 # The operator pdfem chooses for cracked scenes (Model = auto): the energy form.
-mixed auto 47 45
+mixed auto 47 45 geo
 if have_plot; then
   last=$(ls "$work"/mixed_pdlsm_47_45/solution_*.pvtu | sort | tail -n 1)
   xvfb-run -a "$plot" field "$last" --field damage --lines "$work/mixed_pdlsm_47_45/crack_paths.vtk" --edges \
