@@ -165,7 +165,7 @@ fi
 if [[ $sections == *5* ]]; then
 csv="$out/fracture_growth_mixed_mode.csv"
 echo "model,n_pd,theta_deg,mesh_input,dofs,pd_cell_share,steps,exit_state,peak_RF,solves,linear_iterations,solve_s,criterion_s,pdfem_s,process_wall_s,peak_memory_mb" > "$csv"
-# mixed MODEL N_PD THETA INPUT: INPUT "geo" meshes mixed_mode_plate.geo in the run (gmsh's API);
+# mixed MODEL N_PD THETA INPUT: INPUT "geo" meshes mixed_mode_plate.geo in the run (pdfem calls gmsh);
 # "msh" reads the mesh the geo run wrote, as the peer reads its mesh file (the same cells and
 # numbering: history.csv is the same bit for bit), so that the time compares like with like.
 mixed() {
