@@ -3,6 +3,7 @@
 #include <pdfem/base/parameter_tools.h>
 #include <pdfem/base/thread_team.h>
 #include <pdfem/solvers/linear_solver.h>
+#include <pdfem/solvers/ml_coarse_solve.h>
 #include <pdfem/solvers/ml_threaded_products.h>
 
 #include <deal.II/lac/solver_cg.h>
@@ -103,6 +104,7 @@ namespace pdfem
           list.set("smoother: pre or post", std::string("post"));
         amg.initialize(matrix, list);
         thread_ml_products(amg, ThreadTeam::shared());
+        use_envelope_coarse_solve(amg);
       }
     } // namespace
 
