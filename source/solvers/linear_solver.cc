@@ -102,9 +102,8 @@ namespace pdfem
         // the dimension. CG needs the symmetric V-cycle.
         if (constant_modes.size() == 2 && !symmetric)
           list.set("smoother: pre or post", std::string("post"));
-        amg.initialize(matrix, list);
+        initialize_amg_with_envelope_coarse_solve(amg, matrix, list);
         thread_ml_products(amg, ThreadTeam::shared());
-        use_envelope_coarse_solve(amg);
       }
     } // namespace
 

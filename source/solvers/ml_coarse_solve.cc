@@ -3,12 +3,14 @@
 #include <pdfem/solvers/ml_coarse_solve.h>
 
 #include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
+#include <Teuchos_ParameterList.hpp>
 #include <ml_MultiLevelPreconditioner.h>
-#include <ml_amesos.h>
 #include <ml_include.h>
 #include <ml_rap.h>
 
@@ -84,54 +86,73 @@ namespace pdfem
         ML_free(row_values);
         return inside;
       }
+
+      /// Solve the coarsest level of @p amg's hierarchy, built without a
+      /// coarse solve ('coarse: type' do-nothing), by envelope factors;
+      /// false where they do not apply.
+      bool
+      add_envelope_coarse_solve(
+        const dealii::TrilinosWrappers::PreconditionAMG &amg)
+      {
+        const auto *ml_preconditioner =
+          dynamic_cast<const ML_Epetra::MultiLevelPreconditioner *>(
+            &amg.trilinos_operator());
+        if (ml_preconditioner == nullptr ||
+            ml_preconditioner->GetML() == nullptr)
+          return false;
+        ML          *ml    = const_cast<ML *>(ml_preconditioner->GetML());
+        const int    level = ml->ML_coarsest_level;
+        ML_Smoother &post  = ml->post_smoother[level];
+        ML_Smoother &pre   = ml->pre_smoother[level];
+        if (post.smoother == nullptr || post.smoother->func_ptr != nullptr ||
+            (pre.smoother != nullptr && pre.smoother->func_ptr != nullptr))
+          return false;
+
+        ML_Operator *A = &ml->Amat[level];
+        if (A->outvec_leng <= 0 || A->invec_leng != A->outvec_leng)
+          return false;
+        std::vector<int>    row_starts, columns;
+        std::vector<double> values;
+        if (!rows_of(A, row_starts, columns, values))
+          return false;
+        auto factors = std::make_unique<CoarseFactors>();
+        if (!factors->factorize(A->outvec_leng,
+                                row_starts.data(),
+                                columns.data(),
+                                values.data(),
+                                max_coarse_operations))
+          return false;
+        static char label[] = "envelope Cholesky";
+        ML_Set_Smoother(ml,
+                        level,
+                        ML_POSTSMOOTHER,
+                        factors.get(),
+                        envelope_coarse_solve,
+                        label);
+        // ML frees a smoother's data with the smoother's own function.
+        post.data_destroy = delete_coarse_factors;
+        factors.release();
+        return true;
+      }
     } // namespace
 
     bool
-    use_envelope_coarse_solve(
-      const dealii::TrilinosWrappers::PreconditionAMG &amg)
+    initialize_amg_with_envelope_coarse_solve(
+      dealii::TrilinosWrappers::PreconditionAMG    &amg,
+      const dealii::TrilinosWrappers::SparseMatrix &matrix,
+      Teuchos::ParameterList                        list)
     {
-      const auto *ml_preconditioner =
-        dynamic_cast<const ML_Epetra::MultiLevelPreconditioner *>(
-          &amg.trilinos_operator());
-      if (ml_preconditioner == nullptr)
-        return false;
-      const ML *ml = ml_preconditioner->GetML();
-      if (ml == nullptr || ml->comm->ML_nprocs != 1)
-        return false;
-      // Amesos solves the coarsest level as its post-smoother (ML's
-      // default 'coarse: pre or post'); a pre-smoother there as well would
-      // be a setting we do not make.
-      const int    level = ml->ML_coarsest_level;
-      ML_Smoother &post  = ml->post_smoother[level];
-      ML_Smoother &pre   = ml->pre_smoother[level];
-      if (post.smoother == nullptr ||
-          post.smoother->func_ptr != ML_Smoother_Amesos ||
-          (pre.smoother != nullptr && pre.smoother->func_ptr != nullptr))
-        return false;
-
-      ML_Operator *A = &ml->Amat[level];
-      if (A->outvec_leng <= 0 || A->invec_leng != A->outvec_leng)
-        return false;
-      std::vector<int>    row_starts, columns;
-      std::vector<double> values;
-      if (!rows_of(A, row_starts, columns, values))
-        return false;
-      auto factors = std::make_unique<CoarseFactors>();
-      if (!factors->factorize(A->outvec_leng,
-                              row_starts.data(),
-                              columns.data(),
-                              values.data(),
-                              max_coarse_operations))
-        return false;
-
-      // ML frees a smoother's data with the smoother's own function: KLU's
-      // factors go now, the envelope's with the hierarchy.
-      if (post.data_destroy != nullptr)
-        post.data_destroy(post.smoother->data);
-      post.smoother->data     = factors.release();
-      post.data_destroy       = delete_coarse_factors;
-      post.smoother->func_ptr = envelope_coarse_solve;
-      return true;
+      if (dealii::Utilities::MPI::n_mpi_processes(
+            matrix.get_mpi_communicator()) == 1)
+        {
+          Teuchos::ParameterList without_coarse_solve(list);
+          without_coarse_solve.set("coarse: type", std::string("do-nothing"));
+          amg.initialize(matrix, without_coarse_solve);
+          if (add_envelope_coarse_solve(amg))
+            return true;
+        }
+      amg.initialize(matrix, list);
+      return false;
     }
   } // namespace Solvers
 } // namespace pdfem
