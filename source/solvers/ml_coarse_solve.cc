@@ -5,7 +5,6 @@
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
-#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -31,10 +30,10 @@ namespace pdfem
 
       /**
        * A coarse matrix whose factorisation would take more multiply-adds
-       * keeps KLU (about 20-50 ms at the envelope's rate). The coarse levels
-       * measured take far fewer: 2.7e6 on the mixed-mode plate (1 360 rows,
-       * 1.5 ms to factorise), 0.1-1.2 ms on the 3D boxes of the scaling
-       * benchmark (108-896 rows).
+       * keeps KLU (tens of milliseconds at the envelope's rate). The coarse
+       * levels measured factorise in 1.5 ms (the mixed-mode plate, 1 360
+       * rows) and 0.1-1.5 ms (the 3D boxes of the scaling benchmark, 108-896
+       * rows).
        */
       constexpr double max_coarse_operations = 5e7;
 

@@ -174,33 +174,36 @@ namespace
 
   using namespace dealii;
 
-  /// A Csr matrix as a Trilinos matrix on one rank.
-  void
-  to_trilinos(const Csr &A, TrilinosWrappers::SparseMatrix &matrix)
+  /// The grid matrix of shuffled_grid_matrix(80, shift) as a Trilinos
+  /// matrix on one rank, deal.II's ML parameters for it (coarse solve
+  /// Amesos-KLU) and the hierarchy they give.
+  struct GridHierarchy
   {
-    const IndexSet         all = complete_index_set(A.n);
-    DynamicSparsityPattern pattern(A.n);
-    for (std::size_t i = 0; i < A.n; ++i)
-      for (int k = A.starts[i]; k < A.starts[i + 1]; ++k)
-        pattern.add(i, A.columns[k]);
-    matrix.reinit(all, all, pattern, MPI_COMM_SELF);
-    for (std::size_t i = 0; i < A.n; ++i)
-      for (int k = A.starts[i]; k < A.starts[i + 1]; ++k)
-        matrix.set(i, A.columns[k], A.values[k]);
-    matrix.compress(VectorOperation::insert);
-  }
+    explicit GridHierarchy(const double shift)
+    {
+      const Csr              A   = shuffled_grid_matrix(80, shift, 9);
+      const IndexSet         all = complete_index_set(A.n);
+      DynamicSparsityPattern pattern(A.n);
+      for (std::size_t i = 0; i < A.n; ++i)
+        for (int k = A.starts[i]; k < A.starts[i + 1]; ++k)
+          pattern.add(i, A.columns[k]);
+      matrix.reinit(all, all, pattern, MPI_COMM_SELF);
+      for (std::size_t i = 0; i < A.n; ++i)
+        for (int k = A.starts[i]; k < A.starts[i + 1]; ++k)
+          matrix.set(i, A.columns[k], A.values[k]);
+      matrix.compress(VectorOperation::insert);
 
-  /// deal.II's ML parameters for @p matrix (coarse solve Amesos-KLU).
-  Teuchos::ParameterList
-  ml_parameters(const TrilinosWrappers::SparseMatrix &matrix)
-  {
-    TrilinosWrappers::PreconditionAMG::AdditionalData data;
-    data.elliptic = true;
-    Teuchos::ParameterList              list;
-    std::unique_ptr<Epetra_MultiVector> modes;
-    data.set_parameters(list, modes, matrix);
-    return list;
-  }
+      TrilinosWrappers::PreconditionAMG::AdditionalData data;
+      data.elliptic = true;
+      std::unique_ptr<Epetra_MultiVector> modes;
+      data.set_parameters(list, modes, matrix);
+      klu.initialize(matrix, list);
+    }
+
+    TrilinosWrappers::SparseMatrix    matrix;
+    Teuchos::ParameterList            list;
+    TrilinosWrappers::PreconditionAMG klu;
+  };
 
   /// One V-cycle of @p amg applied to a random vector, twice: the results
   /// must be the same bit for bit.
@@ -223,17 +226,14 @@ namespace
 
   TEST(EnvelopeCoarseSolve, SameVCycleAsKLUToSinglePrecision)
   {
-    const Csr                      A = shuffled_grid_matrix(80, 1e-2, 9);
-    TrilinosWrappers::SparseMatrix matrix;
-    to_trilinos(A, matrix);
-    const Teuchos::ParameterList      list = ml_parameters(matrix);
-    TrilinosWrappers::PreconditionAMG klu, envelope;
-    klu.initialize(matrix, list);
+    GridHierarchy                     grid(1e-2);
+    TrilinosWrappers::PreconditionAMG envelope;
     ASSERT_TRUE(pdfem::Solvers::initialize_amg_with_envelope_coarse_solve(
-      envelope, matrix, list));
-    const TrilinosWrappers::MPI::Vector z_klu = v_cycle(klu, A.n);
-    TrilinosWrappers::MPI::Vector       z     = v_cycle(envelope, A.n);
-    const double                        size  = z_klu.l2_norm();
+      envelope, grid.matrix, grid.list));
+    const TrilinosWrappers::MPI::Vector z_klu =
+      v_cycle(grid.klu, grid.matrix.m());
+    TrilinosWrappers::MPI::Vector z    = v_cycle(envelope, grid.matrix.m());
+    const double                  size = z_klu.l2_norm();
     z -= z_klu;
     EXPECT_LT(z.l2_norm(), 1e-5 * size);
     EXPECT_GT(z.l2_norm(), 0.) << "float factors should round";
@@ -244,16 +244,12 @@ namespace
     // Shifted below its smallest eigenvalues, the matrix and its coarse
     // Galerkin matrix are indefinite: the hierarchy is built again as
     // deal.II's parameters ask, and its V-cycle is KLU's bit for bit.
-    const Csr                      A = shuffled_grid_matrix(80, -0.05, 9);
-    TrilinosWrappers::SparseMatrix matrix;
-    to_trilinos(A, matrix);
-    const Teuchos::ParameterList      list = ml_parameters(matrix);
-    TrilinosWrappers::PreconditionAMG klu, fallback;
-    klu.initialize(matrix, list);
+    GridHierarchy                     grid(-0.05);
+    TrilinosWrappers::PreconditionAMG fallback;
     EXPECT_FALSE(pdfem::Solvers::initialize_amg_with_envelope_coarse_solve(
-      fallback, matrix, list));
-    TrilinosWrappers::MPI::Vector z = v_cycle(fallback, A.n);
-    z -= v_cycle(klu, A.n);
+      fallback, grid.matrix, grid.list));
+    TrilinosWrappers::MPI::Vector z = v_cycle(fallback, grid.matrix.m());
+    z -= v_cycle(grid.klu, grid.matrix.m());
     EXPECT_EQ(z.linfty_norm(), 0.);
   }
 } // namespace

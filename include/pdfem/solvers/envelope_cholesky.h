@@ -23,8 +23,8 @@ namespace pdfem
      * vector (a dot product per row forwards, an axpy per row backwards),
      * which the compiler vectorises; a general sparse solve (KLU's) follows
      * index lists instead. This is the coarse solve of the AMG hierarchies
-     * (use_envelope_coarse_solve()): a few thousand unknowns, solved once
-     * per preconditioner application.
+     * (initialize_amg_with_envelope_coarse_solve()): a few thousand unknowns,
+     * solved once per preconditioner application.
      *
      * @tparam Number the type of the stored factors: double, or float for
      * half the memory traffic of a solve. The factorisation is computed in
