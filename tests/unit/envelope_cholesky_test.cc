@@ -172,6 +172,65 @@ namespace
       A.n, A.starts.data(), A.columns.data(), A.values.data(), 1e12));
   }
 
+  /// Does EnvelopeCholesky<double> factorise @p A?
+  bool
+  factorizes(const Csr &A)
+  {
+    pdfem::Solvers::EnvelopeCholesky<double> factors;
+    return factors.factorize(
+      A.n, A.starts.data(), A.columns.data(), A.values.data(), 1e12);
+  }
+
+  /// @p A with @p value added to entry (row, column), inserted if absent.
+  Csr
+  with_entry(const Csr &A, const int row, const int column, const double value)
+  {
+    Csr B;
+    B.n = A.n;
+    for (std::size_t i = 0; i < A.n; ++i)
+      {
+        bool added = false;
+        for (int k = A.starts[i]; k < A.starts[i + 1]; ++k)
+          {
+            const bool here = int(i) == row && A.columns[k] == column;
+            B.columns.push_back(A.columns[k]);
+            B.values.push_back(A.values[k] + (here ? value : 0.));
+            added = added || here;
+          }
+        if (int(i) == row && !added)
+          {
+            B.columns.push_back(column);
+            B.values.push_back(value);
+          }
+        B.starts.push_back(B.columns.size());
+      }
+    return B;
+  }
+
+  TEST(EnvelopeCholesky, RefusesUnsymmetricMatrices)
+  {
+    // Only the lower triangle is factorised: a matrix whose upper triangle
+    // differs is refused, whichever triangle row 5's entries fall in after
+    // the reordering. Rounding zeros in one row only are accepted.
+    const Csr A = shuffled_grid_matrix(10, 1., 2);
+    ASSERT_TRUE(factorizes(A));
+    const int row = 5, neighbour = A.columns[A.starts[row]] == row ?
+                                     A.columns[A.starts[row] + 1] :
+                                     A.columns[A.starts[row]];
+    EXPECT_FALSE(factorizes(with_entry(A, row, neighbour, 1e-3)));
+    EXPECT_FALSE(factorizes(with_entry(A, neighbour, row, 1e-3)));
+    // An entry in one row only, where the matrix has none (checked).
+    bool coupled = false;
+    for (int k = A.starts[0]; k < A.starts[1]; ++k)
+      coupled = coupled || A.columns[k] == 99;
+    ASSERT_FALSE(coupled);
+    EXPECT_FALSE(factorizes(with_entry(A, 0, 99, 0.5)));
+    EXPECT_FALSE(factorizes(with_entry(A, 99, 0, 0.5)));
+    EXPECT_TRUE(factorizes(with_entry(A, 0, 99, 1e-20)));
+    EXPECT_TRUE(factorizes(with_entry(A, 99, 0, 1e-20)));
+    EXPECT_TRUE(factorizes(with_entry(A, row, neighbour, 1e-15)));
+  }
+
   using namespace dealii;
 
   /// The grid matrix of shuffled_grid_matrix(80, shift) as a Trilinos

@@ -40,9 +40,10 @@ namespace pdfem
        * triangles present). Returns false, and keeps no factors, if the
        * factorisation would take more than @p max_operations multiply-adds
        * (bounded by sum_i w_i (w_i + 1) / 2 over the envelope's row widths
-       * w_i, checked before any work) or a pivot is not positive (below
-       * 1e-14 of the largest diagonal entry): A is not (numerically)
-       * positive definite.
+       * w_i, checked before any work), if A is not symmetric (in its
+       * pattern, or in a value by more than 1e-10 of the largest diagonal
+       * entry), or if a pivot is not positive (below 1e-14 of the largest
+       * diagonal entry): A is not (numerically) positive definite.
        */
       bool
       factorize(std::size_t   n,

@@ -24,8 +24,8 @@ namespace pdfem
      * amg.initialize(matrix, list), with the direct solve on the coarsest
      * level done by an EnvelopeCholesky with factors in single precision
      * instead of ML's Amesos-KLU, where that applies: one process, a coarse
-     * matrix that is positive definite and small enough to factorise in a
-     * few tens of milliseconds. ML builds the hierarchy without a coarse
+     * matrix that is symmetric positive definite and small enough to factorise
+     * in a few tens of milliseconds. ML builds the hierarchy without a coarse
      * solve ('coarse: type' do-nothing), so that it factorises nothing
      * itself, and the envelope solve becomes the coarsest level's
      * post-smoother. Where the envelope does not apply, the hierarchy is
