@@ -61,9 +61,13 @@ namespace pdfem
               continue;
             }
           use(h[i], [&](std::size_t k, double r) {
-            double s = r;
+            const std::size_t l = layer_index(k);
+            double            s = r;
             for (unsigned int j = 0; j < dim; ++j)
-              s -= u[j * N + k] * P[symmetric_index<dim>(i, j)][k];
+              {
+                const unsigned int ij = symmetric_index<dim>(i, j);
+                s -= u[j * N + k] * kept(P[ij], P_in[ij], l);
+              }
             Li[k] = beta[k] * s;
           });
         }
@@ -265,11 +269,16 @@ namespace pdfem
             double s = Li[k] + r;
             if (stored)
               {
-                const double u2 = U2(k);
-                s += 0.5 * u2 * (q[i][k] - U(i, k) * p[k]);
+                const std::size_t l  = layer_index(k);
+                const double      u2 = U2(k);
+                s += 0.5 * u2 *
+                     (kept(q[i], q_in[i], l) - U(i, k) * kept(p, p_in, l));
                 for (unsigned int j = 0; j < dim; ++j)
-                  s += U(j, k) *
-                       (U(i, k) * q[j][k] - P[symmetric_index<dim>(i, j)][k]);
+                  {
+                    const unsigned int ij = symmetric_index<dim>(i, j);
+                    s += U(j, k) * (U(i, k) * kept(q[j], q_in[j], l) -
+                                    kept(P[ij], P_in[ij], l));
+                  }
               }
             Li[k] = beta[k] * s;
           });
@@ -286,7 +295,8 @@ namespace pdfem
       // theta = dim beta / m ([g_i (beta u_i)] - u_i [g_i beta]),
       // g = omega xi (specs/002 §1.4 with §7 E3, E4).
       theta.resize(N);
-      if (gb_fields == nullptr)
+      const bool recompute = gb_fields == nullptr && !stored_mask_fields;
+      if (recompute)
         {
           std::fill(theta.begin(), theta.end(), 0.);
           for_gb([&](unsigned int i, std::size_t k, double r) {
@@ -301,11 +311,14 @@ namespace pdfem
       inverse(acc);
       use(acc, [&](std::size_t k, double r) {
         double s = r;
-        if (gb_fields == nullptr)
+        if (recompute)
           s += theta[k];
-        else
+        else if (gb_fields != nullptr)
           for (unsigned int i = 0; i < dim; ++i)
             s -= u[i * N + k] * (*gb_fields)[i * N + k];
+        else if (const std::size_t l = layer_index(k); l != interior)
+          for (unsigned int i = 0; i < dim; ++i) // 0 in the interior
+            s -= u[i * N + k] * gb[i * n_layer + l];
         theta[k] = dim * beta[k] * minv[k] * s;
       });
     }
@@ -324,16 +337,24 @@ namespace pdfem
       if (!stored)
         for_gb(
           [&](unsigned int i, std::size_t k, double r) { L[i * N + k] = r; });
-      const std::vector<double> &gb_fields = stored ? gb : L;
-      lps_dilatation(u, true, &gb_fields);
+      lps_dilatation(u, true, stored ? nullptr : &L);
       for (unsigned int i = 0; i < dim; ++i)
         {
           fftw_complex *si = spectrum(i);
           inverse(si);
-          double       *Li = L.data() + i * N;
-          const double *gi = gb_fields.data() + i * N;
+          double *Li = L.data() + i * N;
+          if (!stored)
+            {
+              use(si, [&](std::size_t k, double r) {
+                Li[k] = minv[k] * (A * theta[k] * Li[k] + B * r);
+              });
+              continue;
+            }
+          const double *gi = gb.data() + i * n_layer;
           use(si, [&](std::size_t k, double r) {
-            Li[k] = minv[k] * (A * theta[k] * gi[k] + B * r);
+            const std::size_t l  = layer_index(k);
+            const double      gk = l == interior ? 0. : gi[l];
+            Li[k]                = minv[k] * (A * theta[k] * gk + B * r);
           });
         }
       fftw_complex *h[dim], *ht = spectrum(dim);
@@ -352,9 +373,13 @@ namespace pdfem
               continue;
             }
           use(h[i], [&](std::size_t k, double r) {
-            double s = Li[k] + r;
+            const std::size_t l = layer_index(k);
+            double            s = Li[k] + r;
             for (unsigned int j = 0; j < dim; ++j)
-              s -= B * u[j * N + k] * P[symmetric_index<dim>(i, j)][k];
+              {
+                const unsigned int ij = symmetric_index<dim>(i, j);
+                s -= B * u[j * N + k] * kept(P[ij], P_in[ij], l);
+              }
             Li[k] = beta[k] * s;
           });
         }

@@ -266,8 +266,10 @@ namespace pdfem
       fftw_complex *s = spectrum(0);
       double       *r = reals(s);
       std::memset(s, 0, alloc * sizeof(fftw_complex));
+      double total = 0.; // every rank sums every bond: the same on all
       for (const auto &o : offsets)
         {
+          total += value(o);
           std::array<unsigned int, dim> i;
           for (unsigned int d = 0; d < dim; ++d)
             i[d] = static_cast<unsigned int>((o.p[d] + int(grid.n[d])) %
@@ -281,6 +283,7 @@ namespace pdfem
       forward(s);
       Kernel k;
       k.parity = parity;
+      k.total  = k.odd() ? 0. : total * scale * double(N_global);
       k.s.assign(fold.size, 0.);
       // conj(k^) = k^ (even: real) or -i Im k^ (odd), on the folded modes
       // (a folded mode met several times gets the same value to round-off;
@@ -394,13 +397,18 @@ namespace pdfem
       o.stored_mask_fields = false;
 
       const auto beta = [&o](std::size_t k) { return o.beta[k]; };
-      const auto made = [N](const unsigned int n) {
-        return std::vector<std::vector<double>>(n, std::vector<double>(N, 0.));
+      const auto made = [](const unsigned int n, const std::size_t size) {
+        return std::vector<std::vector<double>>(n,
+                                                std::vector<double>(size, 0.));
       };
       o.P.clear();
       o.q.clear();
       o.p.clear();
       o.gb.clear();
+      o.layer_bits.clear();
+      o.layer_rank.clear();
+      o.n_layer = 0;
+      double m0 = 0.; // LPS: m where beta is 1 within twice the horizon
       if (this->material_.model == Model::lps)
         {
           // 1/m, m = beta [omega |xi|^2 beta]
@@ -410,6 +418,7 @@ namespace pdfem
             },
             0u,
             o.dV / o.N_global)};
+          m0 = w[0].total;
           o.minv.resize(N);
           o.for_correlations(w,
                              beta,
@@ -423,16 +432,27 @@ namespace pdfem
       if (!o.keep_mask_fields)
         return;
       // the kept fields, made as recomputed ones are (stored_mask_fields is
-      // false until they are complete)
-      std::vector<std::vector<double>> P = made(o.C.size() + o.K.size());
+      // false until they are complete), on the layer nodes only
+      o.make_layer();
+      const std::size_t                n = o.n_layer;
+      std::vector<std::vector<double>> P = made(o.C.size() + o.K.size(), n);
       if (this->material_.model == Model::lps)
         {
-          o.for_P(
-            [&](unsigned int s, std::size_t k, double r) { P[s][k] += r; });
-          o.gb.resize(dim * N);
-          o.for_gb([&](unsigned int i, std::size_t k, double r) {
-            o.gb[i * N + k] = r;
+          o.for_P([&](unsigned int s, std::size_t k, double r) {
+            const std::size_t l = o.layer_index(k);
+            if (l != Impl::interior)
+              P[s][l] += r;
           });
+          o.gb.assign(dim * n, 0.);
+          o.for_gb([&](unsigned int i, std::size_t k, double r) {
+            const std::size_t l = o.layer_index(k);
+            if (l != Impl::interior)
+              o.gb[i * n + l] = r;
+          });
+          // (1/m) [K beta] + [K (beta/m)] where m = m_0 = [omega |xi|^2]
+          o.P_in.clear();
+          for (const auto &K : o.K)
+            o.P_in.push_back(2. * K.total / m0);
         }
       else
         {
@@ -440,9 +460,11 @@ namespace pdfem
           const unsigned int               n_sym = o.C.size();
           std::vector<std::vector<double>> qp;
           if (this->material_.model == Model::nonlinear_bond_based)
-            qp = made(dim + 1);
+            qp = made(dim + 1, n);
           o.compute_bond_fields([&](unsigned int s, std::size_t k, double r) {
-            (s < n_sym ? P[s] : qp[s - n_sym])[k] = r;
+            const std::size_t l = o.layer_index(k);
+            if (l != Impl::interior)
+              (s < n_sym ? P[s] : qp[s - n_sym])[l] = r;
           });
           if (!qp.empty())
             {
@@ -450,9 +472,69 @@ namespace pdfem
               qp.pop_back();
               o.q = std::move(qp);
             }
+          o.P_in.clear();
+          for (const auto &C : o.C)
+            o.P_in.push_back(C.total);
+          o.q_in.assign(dim, 0.); // [a_i 1] = 0: a_i is odd
+          o.p_in = o.c.total;
         }
       o.P                  = std::move(P);
       o.stored_mask_fields = true;
+    }
+
+    template <int dim>
+    const typename FftOperator<dim>::Impl::Kernel &
+    FftOperator<dim>::Impl::indicator()
+    {
+      if (!have_omega0)
+        {
+          omega0      = make_kernel([](const Offset<dim> &) { return 1.; },
+                               0u,
+                               1. / N_global);
+          have_omega0 = true;
+        }
+      return omega0;
+    }
+
+    template <int dim>
+    void
+    FftOperator<dim>::Impl::make_layer()
+    {
+      // The number of bonds of a node that end on a node of beta != 1, one
+      // correlation with the indicator kernel (integers to round-off:
+      // compared with 1/2). LPS: once more from the nodes found, for the
+      // reach of P through m at the neighbours.
+      const std::vector<const Kernel *> count{&indicator()};
+      std::vector<unsigned char>        near(N, 0);
+      for_correlations(
+        count,
+        [this](std::size_t k) { return beta[k] != 1. ? 1. : 0.; },
+        0,
+        [&](unsigned int, std::size_t k, double r) {
+          near[k] = r > 0.5 || (material.model == Model::lps && beta[k] != 1.);
+        });
+      if (material.model == Model::lps)
+        for_correlations(
+          count,
+          [&near](std::size_t k) { return double(near[k]); },
+          0,
+          [&](unsigned int, std::size_t k, double r) {
+            near[k] = near[k] != 0 || r > 0.5;
+          });
+      const std::size_t words = (N + 63) / 64;
+      layer_bits.assign(words, 0);
+      layer_rank.assign(words, 0);
+      n_layer = 0;
+      for (std::size_t w = 0; w < words; ++w)
+        {
+          std::uint64_t bits = 0;
+          for (std::size_t k = 64 * w; k < std::min(N, 64 * w + 64); ++k)
+            if (near[k] != 0 && beta[k] != 0.)
+              bits |= std::uint64_t(1) << (k - 64 * w);
+          layer_bits[w] = bits;
+          layer_rank[w] = n_layer;
+          n_layer += std::size_t(__builtin_popcountll(bits));
+        }
     }
 
     // ------------------------------------------------------ public face
@@ -490,9 +572,7 @@ namespace pdfem
       if (u.size() != dim * impl->N)
         throw std::invalid_argument("FFT::FftOperator::dilatation: u has the "
                                     "wrong size");
-      impl->lps_dilatation(u,
-                           false,
-                           impl->stored_mask_fields ? &impl->gb : nullptr);
+      impl->lps_dilatation(u, false, nullptr);
       theta = impl->theta;
     }
 
@@ -517,9 +597,7 @@ namespace pdfem
                                    "bond-based model yet");
           case Model::lps:
             {
-              o.lps_dilatation(u,
-                               false,
-                               o.stored_mask_fields ? &o.gb : nullptr);
+              o.lps_dilatation(u, false, nullptr);
               o.quadratic_form(u, o.K, W);
               for (std::size_t k = 0; k < o.N; ++k)
                 W[k] = o.beta[k] * (o.A / dim * o.theta[k] * o.theta[k] +
@@ -534,26 +612,20 @@ namespace pdfem
     FftOperator<dim>::damage(std::vector<double>      &d,
                              const DamageNormalisation normalisation)
     {
-      Impl &o = *impl;
-      if (!o.have_omega0)
-        {
-          o.omega0      = o.make_kernel([](const Offset<dim> &) { return 1.; },
-                                   0u,
-                                   1. / o.N_global);
-          o.have_omega0 = true;
-        }
-      fftw_complex       *b = o.spectrum(1), *t = o.spectrum(2);
-      std::vector<double> count(o.N), D(o.N, double(o.offsets.size()));
+      Impl                        &o         = *impl;
+      const typename Impl::Kernel &indicator = o.indicator();
+      fftw_complex                *b = o.spectrum(1), *t = o.spectrum(2);
+      std::vector<double>          count(o.N), D(o.N, double(o.offsets.size()));
       o.fill(b, [&](std::size_t k) { return o.beta[k]; });
       o.forward(b);
-      o.multiply(t, o.omega0, b, 1., false);
+      o.multiply(t, indicator, b, 1., false);
       o.inverse(t);
       o.take(t, count);
       if (normalisation == DamageNormalisation::body)
         {
           o.fill(b, [&](std::size_t k) { return o.body(k); });
           o.forward(b);
-          o.multiply(t, o.omega0, b, 1., false);
+          o.multiply(t, indicator, b, 1., false);
           o.inverse(t);
           o.take(t, D);
         }
@@ -605,9 +677,10 @@ namespace pdfem
       fields(o.P);
       fields(o.q);
       fields({o.gb, o.beta, o.body_values, o.p, o.m, o.minv, o.theta});
-      reals += double(o.body_bits.size()) / 8.;         // chi_B as bytes
-      reals += 2. * double(o.spectra.size()) * o.alloc; // spectra
-      reals += double(o.periodic_inverse.size());       // G^-1
+      reals += double(o.body_bits.size()) / 8.; // chi_B as bytes
+      reals += double(o.layer_bits.size() + o.layer_rank.size()); // layer
+      reals += 2. * double(o.spectra.size()) * o.alloc;           // spectra
+      reals += double(o.periodic_inverse.size());                 // G^-1
       return 8. * reals;
     }
 
@@ -616,6 +689,13 @@ namespace pdfem
     FftOperator<dim>::bytes_per_node() const
     {
       return bytes() / double(std::max<std::size_t>(impl->N, 1));
+    }
+
+    template <int dim>
+    std::size_t
+    FftOperator<dim>::n_layer_nodes() const
+    {
+      return impl->n_layer;
     }
 
     template <int dim>

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <complex>
+#include <cstdint>
 #include <cstring>
 #include <vector>
 
@@ -41,6 +42,10 @@ namespace pdfem
       {
         std::vector<double> s;
         unsigned int        parity = 0;
+        /// The correlation of the kernel with 1: the sum of its bond
+        /// values times Delta V (0 for an odd kernel), the value of [k beta]
+        /// wherever beta is 1 on the whole horizon.
+        double total = 0.;
 
         bool
         odd() const
@@ -434,8 +439,9 @@ namespace pdfem
         if (stored_mask_fields)
           {
             for_nodes([&](std::size_t k, std::size_t) {
+              const std::size_t l = layer_index(k);
               for (unsigned int s = 0; s < P.size(); ++s)
-                f(s, k, P[s][k]);
+                f(s, k, kept(P[s], P_in[s], l));
             });
             return;
           }
@@ -483,20 +489,48 @@ namespace pdfem
                       double                     factor,
                       std::vector<double>       &L);
 
-      /// f(i, k, [g_i beta](k)) of LPS: the stored fields or recomputed
-      /// (one forward, dim inverse transforms, spectra 0 and 1 overwritten).
+      /// f(i, k, [g_i beta](k)) of LPS, computed (one forward, dim inverse
+      /// transforms, spectra 0 and 1 overwritten).
       template <typename F>
       void
       for_gb(const F &f)
       {
-        if (stored_mask_fields)
-          for (unsigned int i = 0; i < dim; ++i)
-            for_nodes(
-              [&](std::size_t k, std::size_t) { f(i, k, gb[i * N + k]); });
-        else
-          for_correlations(
-            g, [this](std::size_t k) { return beta[k]; }, 0, f);
+        for_correlations(
+          g, [this](std::size_t k) { return beta[k]; }, 0, f);
       }
+
+      /// The value at a node of layer index @p l (layer_index()) of a kept
+      /// mask field with layer values @p field and interior value @p inside.
+      static double
+      kept(const std::vector<double> &field,
+           const double               inside,
+           const std::size_t          l)
+      {
+        return l == interior ? inside : field[l];
+      }
+
+      /// The place of local node @p k among the layer nodes, or interior
+      /// where its kept mask fields are their interior values (or not
+      /// needed: beta = 0).
+      std::size_t
+      layer_index(const std::size_t k) const
+      {
+        const std::uint64_t word = layer_bits[k >> 6];
+        const std::uint64_t bit  = std::uint64_t(1) << (k & 63u);
+        return (word & bit) != 0u ?
+                 layer_rank[k >> 6] +
+                   std::size_t(__builtin_popcountll(word & (bit - 1u))) :
+                 interior;
+      }
+
+      /// The layer of the kept mask fields (set_masks(), beta made).
+      void
+      make_layer();
+
+      /// The influence indicator omega_0 (1 on every bond), made at the
+      /// first use.
+      const Kernel &
+      indicator();
 
       /// Q(x) = sum' beta' K_ij eta_i eta_j Delta V (no outer beta); K = C
       /// (bond based) or K (LPS).
@@ -516,9 +550,9 @@ namespace pdfem
 
       /**
        * theta of LPS, with gb_i = [g_i beta] from @p gb_fields (dim N
-       * values, component-major) or, where null, from for_gb(); leaves
-       * Sum_j K_ij^
-       * (beta u_j)^ in spectra 0..dim-1 when @p keep_sums.
+       * values, component-major) or, where null, the kept fields or
+       * for_gb(); leaves Sum_j K_ij^ (beta u_j)^ in spectra 0..dim-1 when
+       * @p keep_sums.
        */
       void
       lps_dilatation(const std::vector<double> &u,
@@ -577,9 +611,23 @@ namespace pdfem
       std::vector<unsigned char>       body_bits;
       std::vector<std::vector<double>> P, q;
       std::vector<double>              gb, p, minv, theta;
-      mutable std::vector<double>      m;
-      double                           A = 0., B = 0.;
-      Fold                             fold;
+      // The kept fields hold the layer nodes only (theory.md §14.3): the
+      // nodes of the body (beta != 0) with a node of beta != 1 within their
+      // reach, the horizon (LPS: the node itself and twice the horizon, as
+      // P depends on m at the neighbours). Elsewhere a field equals its
+      // interior value (P_in, q_in, p_in; [g_i beta] and q_i are 0, odd
+      // kernels) or is not needed (beta = 0 multiplies it). P, q, p have
+      // n_layer values, gb dim n_layer (component-major); layer_bits one
+      // bit per local node, layer_rank the layer nodes before each word.
+      static constexpr std::size_t interior = ~std::size_t(0);
+      std::vector<std::uint64_t>   layer_bits;
+      std::vector<std::size_t>     layer_rank;
+      std::size_t                  n_layer = 0;
+      std::vector<double>          P_in, q_in;
+      double                       p_in = 0.;
+      mutable std::vector<double>  m;
+      double                       A = 0., B = 0.;
+      Fold                         fold;
 
       // apply_periodic_inverse(): G^(kappa)^-1, real and symmetric, its
       // dim (dim + 1) / 2 entries per folded mode (the diagonal, then the

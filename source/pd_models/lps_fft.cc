@@ -107,11 +107,13 @@ namespace pdfem
           Patterns::Bool(),
           "true: the fields that depend on the masks only ([g_i beta] and "
           "(1/m) [K_ij beta] + [K_ij (beta/m)], 9 per node in 3D, 5 in 2D) "
-          "are computed when the masks change and kept; false (lean): "
-          "recomputed in every force evaluation, 72 bytes per box node less "
-          "in 3D (40 in 2D) for about 2.3 times the transforms "
-          "(FFT::FftOptions::keep_mask_fields, doc/benchmarks/fft.md "
-          "\"Memory\").");
+          "are computed when the masks change and kept at the nodes within "
+          "two horizons of the body's surface, a hole or a failed node (the "
+          "layer; elsewhere they are constants; summary.json: fft layer "
+          "nodes); false (lean): recomputed in every force evaluation, up "
+          "to 72 bytes per box node less in 3D (40 in 2D) for about 2.3 "
+          "times the transforms (FFT::FftOptions::keep_mask_fields, "
+          "doc/benchmarks/fft.md \"Memory\").");
         prm.declare_entry(
           "Damage index",
           "body",
@@ -395,7 +397,9 @@ namespace pdfem
     void
     LpsFft<dim>::count_operator_bytes()
     {
-      operator_bytes     = Utilities::MPI::sum(op->bytes(), this->region.comm);
+      operator_bytes = Utilities::MPI::sum(op->bytes(), this->region.comm);
+      layer_nodes =
+        Utilities::MPI::sum(double(op->n_layer_nodes()), this->region.comm);
       largest_rank_bytes = Utilities::MPI::max(op->bytes(), this->region.comm);
     }
 
@@ -711,7 +715,8 @@ namespace pdfem
         {"fft bytes per box node", operator_bytes / double(n_box)},
         {"fft bytes per body node",
          operator_bytes / double(this->region.position->size())},
-        {"fft bytes per rank (largest)", largest_rank_bytes}};
+        {"fft bytes per rank (largest)", largest_rank_bytes},
+        {"fft layer nodes", layer_nodes}};
       all.insert(all.end(), extent.begin(), extent.end());
       return all;
     }

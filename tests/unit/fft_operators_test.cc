@@ -259,21 +259,141 @@ namespace
       op.apply(u, L);
       return op.bytes();
     };
-    const double kept =
-      8. * (6. * folded + N * (1. + 6.) + N / 8. + 3. * 2. * half);
-    EXPECT_EQ(bytes(Model::linear_bond_based, FftOptions()), kept);
-    EXPECT_EQ(bytes(Model::linear_bond_based, lean()), kept - 8. * 6. * N);
+    // kept: the fields at the layer nodes, the layer's bits and counts
+    // (a word and a count per 64 nodes) and the indicator kernel it was
+    // found with
+    const auto layer = [&](const Model model) {
+      FftOperator<3> op(g, material<3>(model));
+      op.set_masks(body, integrity);
+      EXPECT_GT(op.n_layer_nodes(), 0u);
+      EXPECT_LT(op.n_layer_nodes(), g.n_nodes());
+      return double(op.n_layer_nodes());
+    };
+    const double words       = std::ceil(N / 64.);
+    const double lean_linear = 8. * (6. * folded + N + N / 8. + 3. * 2. * half);
+    EXPECT_EQ(bytes(Model::linear_bond_based, lean()), lean_linear);
+    EXPECT_EQ(bytes(Model::linear_bond_based, FftOptions()),
+              lean_linear +
+                8. *
+                  (folded + 6. * layer(Model::linear_bond_based) + 2. * words));
     // nonlinear: 10 kernels (C, a, c), the fields P, q, p (10) beside
     // beta, dim + 2 = 5 work spectra; recomputing drops the 10 fields and
     // one work spectrum
     const double nonlinear = 8. * (10. * folded + N / 8. + N);
     EXPECT_EQ(bytes(Model::nonlinear_bond_based, FftOptions()),
-              nonlinear + 8. * (10. * N + 5. * 2. * half));
+              nonlinear +
+                8. * (folded + 10. * layer(Model::nonlinear_bond_based) +
+                      2. * words + 5. * 2. * half));
     EXPECT_EQ(bytes(Model::nonlinear_bond_based, lean()),
               nonlinear + 8. * 4. * 2. * half);
     // LPS: recomputing drops P_ij (6 fields) and [g_i beta] (3)
     EXPECT_EQ(bytes(Model::lps, FftOptions()) - bytes(Model::lps, lean()),
-              8. * 9. * N);
+              8. * (folded + 9. * layer(Model::lps) + 2. * words));
+  }
+
+  /**
+   * The body nodes that hold kept mask fields, counted bond by bond: those
+   * with a bond to a node of beta != 1 and, for LPS (whose P depends on m
+   * at the neighbours), also those with beta != 1 themselves or a bond to
+   * such a node of the first kind.
+   */
+  template <int dim>
+  std::size_t
+  count_layer(const Grid<dim>           &g,
+              const Material            &mat,
+              const std::vector<double> &beta)
+  {
+    const auto        offsets = horizon_offsets(g, mat.horizon);
+    const std::size_t N       = g.n_nodes();
+    const auto        reaches = [&](const std::vector<char> &marked) {
+      std::vector<char> r(N, 0);
+      for (std::size_t k = 0; k < N; ++k)
+        for (const auto &o : offsets)
+          {
+            auto i = g.indices(k);
+            for (unsigned int d = 0; d < dim; ++d)
+              i[d] = (i[d] + g.n[d] + o.p[d]) % g.n[d];
+            r[k] = r[k] || marked[g.node(i)];
+          }
+      return r;
+    };
+    std::vector<char> not_one(N);
+    for (std::size_t k = 0; k < N; ++k)
+      not_one[k] = beta[k] != 1.;
+    std::vector<char> near = reaches(not_one);
+    if (mat.model == Model::lps)
+      {
+        for (std::size_t k = 0; k < N; ++k)
+          near[k] = near[k] || not_one[k];
+        const std::vector<char> further = reaches(near);
+        for (std::size_t k = 0; k < N; ++k)
+          near[k] = near[k] || further[k];
+      }
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < N; ++k)
+      n += near[k] && beta[k] != 0.;
+    return n;
+  }
+
+  template <int dim>
+  void
+  check_layer_against_direct_sum(const Model model, const Grid<dim> &g)
+  {
+    // a body with a hole, a gap to the box faces and a cluster of dead
+    // nodes near its centre: interior, layer and outside nodes
+    const Material      mat = material<dim>(model);
+    std::vector<double> body, integrity, beta;
+    masks(g, mat.horizon, body, integrity);
+    std::fill(integrity.begin(), integrity.end(), 1.);
+    integrity[g.n_nodes() / 2 + 2] = integrity[g.n_nodes() / 2 + 3] = 0.;
+    FftOperator<dim>    fft(g, mat);
+    DirectOperator<dim> direct(g, mat);
+    fft.set_masks(body, integrity);
+    direct.set_masks(body, integrity);
+    for (std::size_t k = 0; k < body.size(); ++k)
+      beta.push_back(body[k] * integrity[k]);
+    const std::size_t body_nodes = std::count(body.begin(), body.end(), 1.) - 2;
+    EXPECT_EQ(fft.n_layer_nodes(), count_layer(g, mat, beta));
+    EXPECT_LT(fft.n_layer_nodes(), body_nodes);
+    EXPECT_GT(fft.n_layer_nodes(), 0u);
+
+    const std::vector<double> u = random_field(dim * g.n_nodes(), 0.3, 5);
+    std::vector<double>       Lf, Ld;
+    fft.apply(u, Lf);
+    direct.apply(u, Ld);
+    EXPECT_LE(relative_difference(Lf, Ld), 1e-12);
+    if (model == Model::nonlinear_bond_based)
+      return;
+    fft.energy_density(u, Lf);
+    direct.energy_density(u, Ld);
+    EXPECT_LE(relative_difference(Lf, Ld), 1e-12);
+    if (model != Model::lps)
+      return;
+    fft.dilatation(u, Lf);
+    direct.dilatation(u, Ld);
+    EXPECT_LE(relative_difference(Lf, Ld), 1e-12);
+  }
+
+  TEST(FftOperators, KeptFieldsOnTheLayerOnlyEqualDirectSum)
+  {
+    // The kept mask fields are stored at the layer nodes only and are
+    // their interior values elsewhere (theory.md §14.3): the layer is the
+    // one counted bond by bond, smaller than the body, and the operators
+    // equal the direct sum. Grids large enough for an interior at twice
+    // the horizon.
+    Grid<2> g2;
+    g2.n       = {{48, 40}};
+    g2.spacing = {{1., 0.8}};
+    Grid<3> g3;
+    g3.n       = {{26, 24, 22}};
+    g3.spacing = {{1., 0.9, 0.8}};
+    for (const Model model :
+         {Model::linear_bond_based, Model::nonlinear_bond_based, Model::lps})
+      {
+        SCOPED_TRACE(model_name(model));
+        check_layer_against_direct_sum<2>(model, g2);
+        check_layer_against_direct_sum<3>(model, g3);
+      }
   }
 
   TEST(FftOperators, RepeatedEvaluationsAreIdentical)

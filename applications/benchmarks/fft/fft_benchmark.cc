@@ -12,6 +12,10 @@
 // --seconds (at least one), after one untimed evaluation for the FFT.
 // --lean: the FFT operator recomputes its mask fields in every evaluation
 // (FftOptions::keep_mask_fields = false; column mask_fields).
+// --body block: the body is a block with a gap of one horizon to the box
+// faces instead of the whole box (column body), for both operators; the
+// direct sum then runs on the full grid only (--direct-log2 at least
+// --log2n), and layer_nodes is the FFT operator's n_layer_nodes() (rank 0's).
 //
 // Under mpirun the FFT operator is distributed over the ranks (slabs of
 // whole planes, FftOptions::communicator = MPI_COMM_WORLD): each rank holds
@@ -52,6 +56,7 @@ namespace
     bool                      header      = false;
     bool                      skip_direct = false;
     bool                      lean        = false;
+    bool                      block       = false;
     int                       ranks       = 1;
     int                       rank        = 0;
   };
@@ -77,6 +82,7 @@ namespace
       << "         --log2n K1,K2,... --m M1,M2,... [--threads T]\n"
       << "         [--direct-log2 K] [--no-direct] [--seconds S]\n"
       << "         [--planning measure|estimate] [--lean] [--header]\n"
+      << "         [--body box|block]\n"
       << "       (under mpirun -np P: the FFT operator on P ranks)\n";
     std::exit(2);
   }
@@ -126,11 +132,22 @@ namespace
           o.header = true;
         else if (key == "--lean")
           o.lean = true;
+        else if (key == "--body")
+          {
+            const std::string v = value();
+            if (v != "box" && v != "block")
+              usage("--body must be box or block, not " + v);
+            o.block = v == "block";
+          }
         else
           usage("unknown option " + key);
       }
     if (o.dim != 2 && o.dim != 3)
       usage("--dim must be 2 or 3");
+    if (o.block && !o.skip_direct &&
+        o.direct_log2 < *std::max_element(o.log2n.begin(), o.log2n.end()))
+      usage("--body block times the direct sum on the full grid only: give "
+            "--direct-log2 at least the largest --log2n, or --no-direct");
     MPI_Comm_size(MPI_COMM_WORLD, &o.ranks);
     MPI_Comm_rank(MPI_COMM_WORLD, &o.rank);
     if (o.ranks > 1)
@@ -151,6 +168,33 @@ namespace
         g.spacing[d] = 1.;
       }
     return g;
+  }
+
+  /// chi_B at the box nodes [begin, end) of @p g: with @p block the nodes
+  /// at least ceil(m) spacings from every box face (the body in its
+  /// periodic box with a gap of one horizon, specs/002 §3), else empty (the
+  /// body fills the box).
+  template <int dim>
+  std::vector<double>
+  body_mask(const Grid<dim>  &g,
+            const double      m,
+            const std::size_t begin,
+            const std::size_t end,
+            const bool        block)
+  {
+    std::vector<double> body;
+    if (!block)
+      return body;
+    const unsigned int gap = static_cast<unsigned int>(std::ceil(m));
+    for (std::size_t k = begin; k < end; ++k)
+      {
+        const auto i      = g.indices(k);
+        bool       inside = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          inside = inside && i[d] >= gap && i[d] + gap < g.n[d];
+        body.push_back(inside ? 1. : 0.);
+      }
+    return body;
   }
 
   template <int dim>
@@ -226,8 +270,9 @@ namespace
           // The body fills the periodic box (no gap): the direct sum then
           // visits every node's every bond, as the FFT form does in any
           // case (with a body mask the direct sum skips the gap nodes, and
-          // its cost shrinks by the body's share of the box).
-          body.clear();
+          // its cost shrinks by the body's share of the box). --body block:
+          // a block with a gap of one horizon (both operators).
+          body = body_mask(g, m, slab.begin, slab.end, o.block);
           integrity.clear();
 
           FftOptions options;
@@ -287,6 +332,7 @@ namespace
               else
                 {
                   DirectOperator<dim> direct(gd, mat, o.threads);
+                  direct.set_masks(body_mask(gd, m, 0, nd, o.block), {});
                   std::vector<double> ud(dim * nd), Ld;
                   for (auto &v : ud)
                     v = value(generator);
@@ -302,7 +348,7 @@ namespace
           if (o.rank != 0)
             continue;
           std::printf("%d,%s,%g,%u,%zu,%s,%zu,%.6e,%.3f,%zu,%.6e,%zu,%.3f,%.1f,"
-                      "%.0f,%u,%d,%.0f,%s\n",
+                      "%.0f,%u,%d,%.0f,%s,%s,%zu\n",
                       dim,
                       model_name(o.model).c_str(),
                       m,
@@ -321,7 +367,9 @@ namespace
                       o.threads,
                       o.ranks,
                       bytes_per_rank,
-                      o.lean ? "recomputed" : "kept");
+                      o.lean ? "recomputed" : "kept",
+                      o.block ? "block" : "box",
+                      fft.n_layer_nodes());
           std::fflush(stdout);
         }
   }
@@ -336,7 +384,7 @@ main(int argc, char **argv)
     std::printf("dim,model,m,log2n,nodes,grid,bonds,fft_seconds,fft_setup_"
                 "seconds,transforms,direct_seconds,direct_nodes,speedup,fft_"
                 "bytes_per_node,min_bytes_per_node,threads,ranks,fft_bytes_"
-                "per_rank,mask_fields\n");
+                "per_rank,mask_fields,body,layer_nodes\n");
   if (o.dim == 2)
     run<2>(o);
   else

@@ -26,7 +26,9 @@ ms=3,4,5,6,8,10
 
 # Memory against time (fft_memory.csv): each model with its mask fields kept and recomputed
 # (--lean, FftOptions::keep_mask_fields = false), m = 5, 3D N = 2^21 and 2D N = 2^22, the runs of
-# one size alternated. MEMORY_ONLY=1 writes this table only.
+# one size alternated; the body filling the box, then a block with a gap of one horizon (--body
+# block: the kept fields are stored on the layer near its faces; the direct sum on the full grid
+# with the same mask). MEMORY_ONLY=1 writes this table only.
 {
   "$bench" --header --dim 3 --model linear --log2n 15 --m 5 --seconds 0 --no-direct | head -n 1
   for dim in 3 2; do
@@ -34,6 +36,8 @@ ms=3,4,5,6,8,10
     for model in linear lps nonlinear; do
       "$bench" --dim $dim --model $model --log2n $k --m 5 --direct-log2 $d --seconds "$s"
       "$bench" --dim $dim --model $model --log2n $k --m 5 --direct-log2 $d --seconds "$s" --lean
+      "$bench" --dim $dim --model $model --log2n $k --m 5 --direct-log2 $k --seconds "$s" --body block
+      "$bench" --dim $dim --model $model --log2n $k --m 5 --no-direct --seconds "$s" --body block --lean
     done
   done
 } | tee "$memory"

@@ -48,7 +48,8 @@ namespace pdfem
        * per node in 3D), of the nonlinear one also q_i = [a_i beta] and
        * p = [c beta] (80 bytes), and of LPS [g_i beta] (dim fields) with
        * the combined (1/m) [K_ij beta] + [K_ij (beta/m)] (72 bytes per node
-       * in 3D). Recomputing takes per force evaluation in 3D 13 transforms
+       * in 3D), each at the layer nodes only (n_layer_nodes()). Recomputing
+       * takes per force evaluation in 3D 13 transforms
        * instead of 6 (linear bond based), 55 instead of 35 (nonlinear bond
        * based) and 32 instead of 14 (LPS); the results are the same to
        * round-off.
@@ -153,6 +154,18 @@ namespace pdfem
        */
       double
       bytes() const;
+
+      /**
+       * The nodes of this rank at which the kept mask fields are stored
+       * (0 where they are recomputed, FftOptions::keep_mask_fields): the
+       * body nodes with a node of beta != 1 within the fields' reach, one
+       * horizon (LPS: the node itself and two horizons; theory.md §14.3).
+       * At the other body nodes the fields equal their values in an
+       * unbounded intact body, the sums of their kernels over the horizon,
+       * and are not stored.
+       */
+      std::size_t
+      n_layer_nodes() const;
 
       /// The part of the box this rank holds (the whole grid on one rank).
       const Slab &

@@ -316,7 +316,8 @@ namespace pdfem
       bool        inverse_distance = true;
       double      dirichlet_layer  = 1.;
       double      traction_layer   = 0.;
-      /// LPS fft/Keep mask fields (FFT::FftOptions::keep_mask_fields).
+      /// LPS fft/Keep mask fields (FFT::FftOptions::keep_mask_fields; kept
+      /// at the layer nodes only, FFT::FftOperator::n_layer_nodes()).
       bool   keep_mask_fields = true;
       double delta = 0., A = 0., B = 0., bulk_modulus = 0.;
       double node_volume = 0.;
@@ -363,8 +364,11 @@ namespace pdfem
       std::vector<dealii::Tensor<2, dim>> gradient;
       FailedNodes<dim>                    failed;
       /// The FFT operator's bytes over all ranks and on the largest rank.
-      double                                 operator_bytes     = 0.;
-      double                                 largest_rank_bytes = 0.;
+      double operator_bytes     = 0.;
+      double largest_rank_bytes = 0.;
+      /// The nodes holding kept mask fields, summed over the ranks
+      /// (FFT::FftOperator::n_layer_nodes()).
+      double                                 layer_nodes = 0.;
       std::unique_ptr<FFT::FftOperator<dim>> op;
       /// The grid offsets of the discrete horizon (the gradient's bonds).
       std::vector<FFT::Offset<dim>> stencil;
