@@ -261,13 +261,24 @@ namespace pdfem
                                         const unsigned int parity,
                                         const double       scale)
     {
+      return make_kernel(offsets, value, parity, scale);
+    }
+
+    template <int dim>
+    template <typename F>
+    typename FftOperator<dim>::Impl::Kernel
+    FftOperator<dim>::Impl::make_kernel(const std::vector<Offset<dim>> &support,
+                                        const F                        &value,
+                                        const unsigned int              parity,
+                                        const double                    scale)
+    {
       // sampled on this rank's slab (a kernel is a function of the
       // periodic offset: each rank samples its own planes)
       fftw_complex *s = spectrum(0);
       double       *r = reals(s);
       std::memset(s, 0, alloc * sizeof(fftw_complex));
       double total = 0.; // every rank sums every bond: the same on all
-      for (const auto &o : offsets)
+      for (const auto &o : support)
         {
           total += value(o);
           std::array<unsigned int, dim> i;
@@ -500,37 +511,103 @@ namespace pdfem
     void
     FftOperator<dim>::Impl::make_layer()
     {
-      // The number of bonds of a node that end on a node of beta != 1, one
-      // correlation with the indicator kernel (integers to round-off:
-      // compared with 1/2). LPS: once more from the nodes found, for the
-      // reach of P through m at the neighbours.
-      const std::vector<const Kernel *> count{&indicator()};
-      std::vector<unsigned char>        near(N, 0);
-      for_correlations(
-        count,
-        [this](std::size_t k) { return beta[k] != 1. ? 1. : 0.; },
-        0,
-        [&](unsigned int, std::size_t k, double r) {
-          near[k] = r > 0.5 || (material.model == Model::lps && beta[k] != 1.);
-        });
-      if (material.model == Model::lps)
-        for_correlations(
-          count,
-          [&near](std::size_t k) { return double(near[k]); },
-          0,
-          [&](unsigned int, std::size_t k, double r) {
-            near[k] = near[k] != 0 || r > 0.5;
-          });
+      // The kept fields at x depend on beta at x + z for z in the reach Z:
+      // the bonds H (bond based); for LPS also z = 0 and the sums of two
+      // bonds (P holds 1/m at x and at x + xi). near(x): the nodes of
+      // beta != 1 in x + Z, counted by one correlation with the indicator
+      // of Z (made once; integers to round-off, compared with 1/2). Where
+      // beta is 0 or 1 everywhere, 1{beta != 1} = 1 - beta, and LPS's
+      // spectrum of beta is still in spectrum 1 (set_masks(), 1/m): one
+      // inverse transform then.
+      const bool lps = material.model == Model::lps;
+      if (lps && !have_reach)
+        {
+          // Z, one offset per periodic position (Z's total counts them),
+          // flagged on the offsets of half-width 2 max|p| or, in a
+          // direction where that reaches round the box, on its n_d planes
+          std::array<int, dim> half{}, extent{};
+          for (const auto &o : offsets)
+            for (unsigned int d = 0; d < dim; ++d)
+              half[d] = std::max(half[d], 2 * std::abs(o.p[d]));
+          std::array<std::size_t, dim> stride{};
+          std::size_t                  size = 1;
+          for (int d = dim - 1; d >= 0; --d)
+            {
+              extent[d] = std::min(2 * half[d] + 1, int(grid.n[d]));
+              stride[d] = size;
+              size *= std::size_t(extent[d]);
+            }
+          std::vector<unsigned char> in(size, 0);
+          std::vector<Offset<dim>>   Z;
+          const auto                 add = [&](const std::array<int, dim> &p) {
+            std::size_t at = 0;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const int n = int(grid.n[d]);
+                at += std::size_t(extent[d] < n ? p[d] + half[d] :
+                                                  (p[d] % n + n) % n) *
+                      stride[d];
+              }
+            if (in[at] == 0)
+              {
+                in[at] = 1;
+                Z.emplace_back();
+                Z.back().p = p;
+              }
+          };
+          add(std::array<int, dim>{});
+          for (const auto &a : offsets)
+            {
+              add(a.p);
+              for (const auto &b : offsets)
+                {
+                  std::array<int, dim> p;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    p[d] = a.p[d] + b.p[d];
+                  add(p);
+                }
+            }
+          reach = make_kernel(
+            Z, [](const Offset<dim> &) { return 1.; }, 0u, 1. / N_global);
+          have_reach = true;
+        }
+      const Kernel &Z = lps ? reach : indicator();
+      int binary      = std::all_of(beta.begin(), beta.end(), [](double b) {
+        return b == 0. || b == 1.;
+      });
+      if (distributed)
+        MPI_Allreduce(MPI_IN_PLACE, &binary, 1, MPI_INT, MPI_LAND, comm);
+      fftw_complex *t    = spectrum(2);
+      double        ones = 0.; // sum of the kernel's values
+      if (lps && binary)
+        {
+          // beta^ in spectrum 1: near = |Z| - [1_Z beta] > 1/2
+          multiply(t, Z, spectrum(1), 1., false);
+          ones = Z.total;
+        }
+      else
+        {
+          fftw_complex *n = spectrum(1);
+          fill(n, [this](std::size_t k) { return beta[k] != 1. ? 1. : 0.; });
+          forward(n);
+          multiply(t, Z, n, 1., false);
+        }
+      inverse(t);
+      const double     *count = reals(t);
       const std::size_t words = (N + 63) / 64;
       layer_bits.assign(words, 0);
       layer_rank.assign(words, 0);
-      n_layer = 0;
+      n_layer              = 0;
+      const std::size_t nl = row, st = stride;
       for (std::size_t w = 0; w < words; ++w)
         {
           std::uint64_t bits = 0;
           for (std::size_t k = 64 * w; k < std::min(N, 64 * w + 64); ++k)
-            if (near[k] != 0 && beta[k] != 0.)
-              bits |= std::uint64_t(1) << (k - 64 * w);
+            {
+              const double c = count[k / nl * st + k % nl];
+              if (beta[k] != 0. && (binary && lps ? ones - c : c) > 0.5)
+                bits |= std::uint64_t(1) << (k - 64 * w);
+            }
           layer_bits[w] = bits;
           layer_rank[w] = n_layer;
           n_layer += std::size_t(__builtin_popcountll(bits));
@@ -669,7 +746,7 @@ namespace pdfem
       kernels(o.a);
       kernels(o.K);
       kernels(o.g);
-      reals += double(o.c.s.size() + o.omega0.s.size());
+      reals += double(o.c.s.size() + o.omega0.s.size() + o.reach.s.size());
       const auto fields = [&](const std::vector<std::vector<double>> &fs) {
         for (const auto &f : fs)
           reals += double(f.size());

@@ -382,6 +382,15 @@ namespace pdfem
       Kernel
       make_kernel(const F &value, unsigned int parity, double scale);
 
+      /// make_kernel() on the offsets @p support (an offset met twice in
+      /// the periodic box takes one value).
+      template <typename F>
+      Kernel
+      make_kernel(const std::vector<Offset<dim>> &support,
+                  const F                        &value,
+                  unsigned int                    parity,
+                  double                          scale);
+
       /// The kernels of the model (and the influence counts for damage).
       void
       make_kernels();
@@ -523,7 +532,9 @@ namespace pdfem
                  interior;
       }
 
-      /// The layer of the kept mask fields (set_masks(), beta made).
+      /// The layer of the kept mask fields (set_masks(), beta made; LPS:
+      /// with the spectrum of beta in spectrum 1). Spectra 1 and 2
+      /// overwritten.
       void
       make_layer();
 
@@ -595,6 +606,9 @@ namespace pdfem
       std::vector<Kernel> C, a, K, g;
       Kernel              c, omega0;
       bool                have_omega0 = false;
+      // LPS: the indicator of the kept fields' reach (make_layer())
+      Kernel reach;
+      bool   have_reach = false;
 
       // mask fields: beta = chi_B lambda; chi_B as bytes where every value
       // is 0 or 1, else as doubles; P_s = [C_s beta] (bond based) or

@@ -494,6 +494,7 @@ namespace pdfem
           op->damage(d_box, normalisation);
           exchange->pull(d_box, 1, d_owner.data());
           count_failed_nodes();
+          count_operator_bytes(); // the kept fields' layer has grown
         }
     }
 
@@ -563,6 +564,7 @@ namespace pdfem
       op->damage(d_box, normalisation);
       exchange->pull(d_box, 1, d_owner.data());
       count_failed_nodes();
+      count_operator_bytes();
     }
 
     template <int dim>

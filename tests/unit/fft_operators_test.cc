@@ -337,15 +337,20 @@ namespace
 
   template <int dim>
   void
-  check_layer_against_direct_sum(const Model model, const Grid<dim> &g)
+  check_layer_against_direct_sum(const Model      model,
+                                 const Grid<dim> &g,
+                                 const bool       partial)
   {
-    // a body with a hole, a gap to the box faces and a cluster of dead
-    // nodes near its centre: interior, layer and outside nodes
+    // a body with a hole, a gap to the box faces and, near its centre, a
+    // dead node and, with @p partial, a half-intact one (beta neither 0
+    // nor 1: the layer is then counted from 1{beta != 1} itself):
+    // interior, layer and outside nodes
     const Material      mat = material<dim>(model);
     std::vector<double> body, integrity, beta;
     masks(g, mat.horizon, body, integrity);
     std::fill(integrity.begin(), integrity.end(), 1.);
-    integrity[g.n_nodes() / 2 + 2] = integrity[g.n_nodes() / 2 + 3] = 0.;
+    integrity[g.n_nodes() / 2 + 2] = 0.;
+    integrity[g.n_nodes() / 2 + 3] = partial ? 0.5 : 0.;
     FftOperator<dim>    fft(g, mat);
     DirectOperator<dim> direct(g, mat);
     fft.set_masks(body, integrity);
@@ -391,8 +396,11 @@ namespace
          {Model::linear_bond_based, Model::nonlinear_bond_based, Model::lps})
       {
         SCOPED_TRACE(model_name(model));
-        check_layer_against_direct_sum<2>(model, g2);
-        check_layer_against_direct_sum<3>(model, g3);
+        for (const bool partial : {false, true})
+          {
+            check_layer_against_direct_sum<2>(model, g2, partial);
+            check_layer_against_direct_sum<3>(model, g3, partial);
+          }
       }
   }
 
