@@ -522,51 +522,8 @@ namespace pdfem
       const bool lps = material.model == Model::lps;
       if (lps && !have_reach)
         {
-          // Z, one offset per periodic position (Z's total counts them),
-          // flagged on the offsets of half-width 2 max|p| or, in a
-          // direction where that reaches round the box, on its n_d planes
-          std::array<int, dim> half{}, extent{};
-          for (const auto &o : offsets)
-            for (unsigned int d = 0; d < dim; ++d)
-              half[d] = std::max(half[d], 2 * std::abs(o.p[d]));
-          std::array<std::size_t, dim> stride{};
-          std::size_t                  size = 1;
-          for (int d = dim - 1; d >= 0; --d)
-            {
-              extent[d] = std::min(2 * half[d] + 1, int(grid.n[d]));
-              stride[d] = size;
-              size *= std::size_t(extent[d]);
-            }
-          std::vector<unsigned char> in(size, 0);
-          std::vector<Offset<dim>>   Z;
-          const auto                 add = [&](const std::array<int, dim> &p) {
-            std::size_t at = 0;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const int n = int(grid.n[d]);
-                at += std::size_t(extent[d] < n ? p[d] + half[d] :
-                                                  (p[d] % n + n) % n) *
-                      stride[d];
-              }
-            if (in[at] == 0)
-              {
-                in[at] = 1;
-                Z.emplace_back();
-                Z.back().p = p;
-              }
-          };
-          add(std::array<int, dim>{});
-          for (const auto &a : offsets)
-            {
-              add(a.p);
-              for (const auto &b : offsets)
-                {
-                  std::array<int, dim> p;
-                  for (unsigned int d = 0; d < dim; ++d)
-                    p[d] = a.p[d] + b.p[d];
-                  add(p);
-                }
-            }
+          const std::vector<Offset<dim>> Z =
+            internal::offsets_within_two_bonds(grid, offsets);
           reach = make_kernel(
             Z, [](const Offset<dim> &) { return 1.; }, 0u, 1. / N_global);
           have_reach = true;
@@ -577,17 +534,20 @@ namespace pdfem
       });
       if (distributed)
         MPI_Allreduce(MPI_IN_PLACE, &binary, 1, MPI_INT, MPI_LAND, comm);
-      fftw_complex *t    = spectrum(2);
+      // (spectra the set-up uses anyway: 0 and 1, LPS 1 and 2)
+      fftw_complex *t    = nullptr;
       double        ones = 0.; // sum of the kernel's values
       if (lps && binary)
         {
           // beta^ in spectrum 1: near = |Z| - [1_Z beta] > 1/2
+          t = spectrum(2);
           multiply(t, Z, spectrum(1), 1., false);
           ones = Z.total;
         }
       else
         {
-          fftw_complex *n = spectrum(1);
+          fftw_complex *n = spectrum(0);
+          t               = spectrum(1);
           fill(n, [this](std::size_t k) { return beta[k] != 1. ? 1. : 0.; });
           forward(n);
           multiply(t, Z, n, 1., false);

@@ -533,8 +533,8 @@ namespace pdfem
       }
 
       /// The layer of the kept mask fields (set_masks(), beta made; LPS:
-      /// with the spectrum of beta in spectrum 1). Spectra 1 and 2
-      /// overwritten.
+      /// with the spectrum of beta in spectrum 1). Spectra 0 and 1 (LPS
+      /// with beta 0 or 1: 2) overwritten.
       void
       make_layer();
 

@@ -6,7 +6,9 @@
 #include <pdfem/fft/grid.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
+#include <cstdlib>
 #include <thread>
 #include <vector>
 
@@ -16,6 +18,64 @@ namespace pdfem
   {
     namespace internal
     {
+      /**
+       * The offsets z = 0, z = xi and z = xi + xi' for bonds xi, xi' of
+       * @p bonds, one per periodic position in @p grid (an offset that
+       * reaches round the box meets another one there): the reach of the
+       * LPS mask fields (FftOperator's layer, theory.md §14.3).
+       */
+      template <int dim>
+      std::vector<Offset<dim>>
+      offsets_within_two_bonds(const Grid<dim>                &grid,
+                               const std::vector<Offset<dim>> &bonds)
+      {
+        // flags on the offsets of half-width 2 max|p| or, in a direction
+        // where that reaches round the box, on its n_d planes
+        std::array<int, dim> half{}, extent{};
+        for (const auto &o : bonds)
+          for (unsigned int d = 0; d < dim; ++d)
+            half[d] = std::max(half[d], 2 * std::abs(o.p[d]));
+        std::array<std::size_t, dim> stride{};
+        std::size_t                  size = 1;
+        for (int d = dim - 1; d >= 0; --d)
+          {
+            extent[d] = std::min(2 * half[d] + 1, int(grid.n[d]));
+            stride[d] = size;
+            size *= std::size_t(extent[d]);
+          }
+        std::vector<unsigned char> in(size, 0);
+        std::vector<Offset<dim>>   Z;
+        const auto                 add = [&](const std::array<int, dim> &p) {
+          std::size_t at = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const int n = int(grid.n[d]);
+              at += std::size_t(extent[d] < n ? p[d] + half[d] :
+                                                (p[d] % n + n) % n) *
+                    stride[d];
+            }
+          if (in[at] == 0)
+            {
+              in[at] = 1;
+              Z.emplace_back();
+              Z.back().p = p;
+            }
+        };
+        add(std::array<int, dim>{});
+        for (const auto &a : bonds)
+          {
+            add(a.p);
+            for (const auto &b : bonds)
+              {
+                std::array<int, dim> p;
+                for (unsigned int d = 0; d < dim; ++d)
+                  p[d] = a.p[d] + b.p[d];
+                add(p);
+              }
+          }
+        return Z;
+      }
+
       /**
        * f(begin, end) on @p threads contiguous pieces of [0, n) (threads
        * started per call; a single piece below 2^15 items, where starting a

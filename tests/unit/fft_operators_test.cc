@@ -289,6 +289,29 @@ namespace
     // LPS: recomputing drops P_ij (6 fields) and [g_i beta] (3)
     EXPECT_EQ(bytes(Model::lps, FftOptions()) - bytes(Model::lps, lean()),
               8. * (folded + 9. * layer(Model::lps) + 2. * words));
+
+    // 2D linear bond based, 16 x 12 nodes: finding the layer takes no
+    // work spectrum beyond the evaluation's two
+    Grid<2> g2;
+    g2.n       = {{16, 12}};
+    g2.spacing = {{1., 1.}};
+    std::vector<double> body2, integrity2;
+    masks(g2, 3.05, body2, integrity2);
+    const std::vector<double> u2 = random_field(2 * g2.n_nodes(), 0.3, 2);
+    const auto bytes2 = [&](const FftOptions &options, std::size_t &n) {
+      FftOperator<2> op(g2, material<2>(Model::linear_bond_based), options);
+      op.set_masks(body2, integrity2);
+      op.apply(u2, L);
+      n = op.n_layer_nodes();
+      return op.bytes();
+    };
+    std::size_t  n_kept = 0, n_lean = 0;
+    const double kept2 = bytes2(FftOptions(), n_kept);
+    EXPECT_EQ(kept2 - bytes2(lean(), n_lean),
+              8. * (9. * 7. + 3. * double(n_kept) +
+                    2. * std::ceil(double(g2.n_nodes()) / 64.)));
+    EXPECT_GT(n_kept, 0u);
+    EXPECT_EQ(n_lean, 0u);
   }
 
   /**
