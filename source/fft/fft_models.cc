@@ -269,14 +269,15 @@ namespace pdfem
             double s = Li[k] + r;
             if (stored)
               {
+                // q_i = [a_i beta] is 0 off the layer (a_i is odd)
                 const std::size_t l  = layer_index(k);
                 const double      u2 = U2(k);
-                s += 0.5 * u2 *
-                     (kept(q[i], q_in[i], l) - U(i, k) * kept(p, p_in, l));
+                s +=
+                  0.5 * u2 * (kept(q[i], 0., l) - U(i, k) * kept(p, p_in, l));
                 for (unsigned int j = 0; j < dim; ++j)
                   {
                     const unsigned int ij = symmetric_index<dim>(i, j);
-                    s += U(j, k) * (U(i, k) * kept(q[j], q_in[j], l) -
+                    s += U(j, k) * (U(i, k) * kept(q[j], 0., l) -
                                     kept(P[ij], P_in[ij], l));
                   }
               }

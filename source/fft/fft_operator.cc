@@ -486,7 +486,6 @@ namespace pdfem
           o.P_in.clear();
           for (const auto &C : o.C)
             o.P_in.push_back(C.total);
-          o.q_in.assign(dim, 0.); // [a_i 1] = 0: a_i is odd
           o.p_in = o.c.total;
         }
       o.P                  = std::move(P);

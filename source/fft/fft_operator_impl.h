@@ -629,7 +629,7 @@ namespace pdfem
       // nodes of the body (beta != 0) with a node of beta != 1 within their
       // reach, the horizon (LPS: the node itself and twice the horizon, as
       // P depends on m at the neighbours). Elsewhere a field equals its
-      // interior value (P_in, q_in, p_in; [g_i beta] and q_i are 0, odd
+      // interior value (P_in, p_in; [g_i beta] and q_i are 0, odd
       // kernels) or is not needed (beta = 0 multiplies it). P, q, p have
       // n_layer values, gb dim n_layer (component-major); layer_bits one
       // bit per local node, layer_rank the layer nodes before each word.
@@ -637,7 +637,7 @@ namespace pdfem
       std::vector<std::uint64_t>   layer_bits;
       std::vector<std::size_t>     layer_rank;
       std::size_t                  n_layer = 0;
-      std::vector<double>          P_in, q_in;
+      std::vector<double>          P_in;
       double                       p_in = 0.;
       mutable std::vector<double>  m;
       double                       A = 0., B = 0.;
